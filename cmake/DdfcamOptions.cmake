@@ -1,0 +1,15 @@
+# SPDX-License-Identifier: MIT
+# Compile options shared by every ddfcam target, applied through the interface target ddfcam_options.
+add_library(ddfcam_options INTERFACE)
+target_compile_options(ddfcam_options INTERFACE -Wall -Wextra -Wpedantic -Wno-sign-compare)
+if(DDFCAM_STRICT_WARNINGS)
+  target_compile_options(ddfcam_options INTERFACE -Werror)
+endif()
+if(DDFCAM_NATIVE)
+  target_compile_options(ddfcam_options INTERFACE -march=native)
+  target_compile_definitions(ddfcam_options INTERFACE DDFCAM_NATIVE_BUILD=1)
+endif()
+if(DDFCAM_SANITIZER)
+  target_compile_options(ddfcam_options INTERFACE -fsanitize=${DDFCAM_SANITIZER} -fno-omit-frame-pointer)
+  target_link_options(ddfcam_options INTERFACE -fsanitize=${DDFCAM_SANITIZER})
+endif()

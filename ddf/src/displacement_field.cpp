@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: MIT
+#include <ddfcam/ddf/displacement_field.h>
+#include <ddfcam/error.h>
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+namespace ddfcam::ddf {
+
+DisplacementField::DisplacementField(SupportMesh support, std::vector<Vec3> vectors, int m,
+                                     float initialHeight)
+    : support_(std::move(support)) {
+  if (vectors.size() != support_.n_vertices()) {
+    throw InvalidInput("DDF needs one displacement vector per support vertex: " +
+                       std::to_string(vectors.size()) + " vectors for " +
+                       std::to_string(support_.n_vertices()) + " vertices");
+  }
+  topology_ = RasterTopology(support_, m);
+  positions_.reserve(support_.n_vertices());
+  for (const auto vh : support_.vertices()) positions_.push_back(toEigen(support_.point(vh)));
+  vectors_ = std::move(vectors);
+  faceVertices_.resize(support_.n_faces());
+  for (int f = 0; f < static_cast<int>(faceVertices_.size()); ++f)
+    faceVertices_[f] = topology_.faceVertices(f);
+  pointsPerFace_ = topology_.raster().pointCount();
+  heights_.assign(pointsPerFace_ * faceVertices_.size(), initialHeight);
+}
+
+void DisplacementField::setVectors(std::vector<Vec3> vectors) {
+  if (vectors.size() != positions_.size()) {
+    throw InvalidInput("setVectors: " + std::to_string(vectors.size()) + " vectors for " +
+                       std::to_string(positions_.size()) + " vertices");
+  }
+  vectors_ = std::move(vectors);
+}
+
+Vec3 DisplacementField::basePoint(int f, const Vec3& bary) const {
+  const auto& fv = faceVertices_[f];
+  return bary[0] * positions_[fv[0]] + bary[1] * positions_[fv[1]] + bary[2] * positions_[fv[2]];
+}
+
+Vec3 DisplacementField::vectorAt(int f, const Vec3& bary) const {
+  const auto& fv = faceVertices_[f];
+  return bary[0] * vectors_[fv[0]] + bary[1] * vectors_[fv[1]] + bary[2] * vectors_[fv[2]];
+}
+
+Vec3 DisplacementField::pointAt(int f, const Vec3& bary, double h) const {
+  return basePoint(f, bary) + h * vectorAt(f, bary);
+}
+
+Vec3 DisplacementField::rasterBary(int i, int k) const {
+  const int n = raster().steps();
+  const double inv = 1.0 / n;
+  return {i * inv, (n - i - k) * inv, k * inv};
+}
+
+Vec3 DisplacementField::surfacePoint(int f, int i, int k) const {
+  return pointAt(f, rasterBary(i, k), height(f, i, k));
+}
+
+void DisplacementField::syncEdge(int edge, SharedPolicy policy) {
+  const auto& sides = topology_.edgeFaces(edge);
+  if (sides[0] < 0 || sides[1] < 0) return;
+  const int n = raster().steps();
+  for (int t = 1; t < n; ++t) {
+    const PointId p = topology_.edgePointId(edge, t);
+    float value = std::numeric_limits<float>::infinity();
+    int bestFace = std::numeric_limits<int>::max();
+    topology_.forEachCopy(p, [&](PointCopy c) {
+      const float h = heights_[c.face * pointsPerFace_ + c.local];
+      if (policy == SharedPolicy::Minimum) {
+        value = std::min(value, h);
+      } else if (c.face < bestFace) {
+        bestFace = c.face, value = h;
+      }
+    });
+    topology_.forEachCopy(p, [&](PointCopy c) { heights_[c.face * pointsPerFace_ + c.local] = value; });
+  }
+}
+
+void DisplacementField::syncVertex(int vertex, SharedPolicy policy) {
+  float value = std::numeric_limits<float>::infinity();
+  int bestFace = std::numeric_limits<int>::max();
+  const auto p = static_cast<PointId>(vertex);
+  topology_.forEachCopy(p, [&](PointCopy c) {
+    const float h = heights_[c.face * pointsPerFace_ + c.local];
+    if (policy == SharedPolicy::Minimum) {
+      value = std::min(value, h);
+    } else if (c.face < bestFace) {
+      bestFace = c.face, value = h;
+    }
+  });
+  topology_.forEachCopy(p, [&](PointCopy c) { heights_[c.face * pointsPerFace_ + c.local] = value; });
+}
+
+void DisplacementField::synchronizeShared(SharedPolicy policy) {
+  for (int e = 0; e < static_cast<int>(support_.n_edges()); ++e) syncEdge(e, policy);
+  for (int v = 0; v < vertexCount(); ++v) syncVertex(v, policy);
+}
+
+void DisplacementField::synchronizeShared(SharedPolicy policy, std::span<const int> faces) {
+  for (int f : faces) {
+    for (int e = 0; e < 3; ++e) syncEdge(topology_.faceEdge(f, e), policy);
+    for (int v : faceVertices_[f]) syncVertex(v, policy);
+  }
+}
+
+std::size_t DisplacementField::memoryBytes() const {
+  // OpenMesh array kernel: point per vertex, one handle per vertex and face, per halfedge
+  // (vertex, face, next, prev) handles.
+  const std::size_t meshBytes = support_.n_vertices() * (sizeof(OpenMesh::Vec3d) + 4) +
+                                support_.n_faces() * 4 + support_.n_halfedges() * 16;
+  const std::size_t topologyBytes =
+      faceVertices_.size() * (3 * 4 * 3) + support_.n_edges() * (2 * 4 * 2) +
+      support_.n_vertices() * sizeof(std::vector<int>) + support_.n_faces() * 3 * 4;
+  return meshBytes + topologyBytes + positions_.size() * sizeof(Vec3) +
+         vectors_.size() * sizeof(Vec3) + heights_.size() * sizeof(float);
+}
+
+}  // namespace ddfcam::ddf

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+// Small support meshes built in code for the unit tests.
+#pragma once
+
+#include <ddfcam/ddf/displacement_field.h>
+#include <ddfcam/ddf/support_mesh.h>
+
+#include <array>
+#include <vector>
+
+namespace ddfcam::test {
+
+/// Regular grid in the z = 0 plane, nx x ny quads of size (sx, sy) mm, each split in two.
+inline ddf::SupportMesh gridMesh(int nx, int ny, double sx = 1.0, double sy = 1.0) {
+  std::vector<ddf::Vec3> points;
+  std::vector<std::array<int, 3>> triangles;
+  for (int y = 0; y <= ny; ++y)
+    for (int x = 0; x <= nx; ++x) points.emplace_back(x * sx, y * sy, 0.0);
+  auto at = [&](int x, int y) { return y * (nx + 1) + x; };
+  for (int y = 0; y < ny; ++y)
+    for (int x = 0; x < nx; ++x) {
+      triangles.push_back({at(x, y), at(x + 1, y), at(x + 1, y + 1)});
+      triangles.push_back({at(x, y), at(x + 1, y + 1), at(x, y + 1)});
+    }
+  return ddf::makeSupportMesh(points, triangles);
+}
+
+/// Regular octahedron with vertices at distance r from the origin (closed, genus 0).
+inline ddf::SupportMesh octahedronMesh(double r = 1.0) {
+  const std::vector<ddf::Vec3> points = {{r, 0, 0},  {-r, 0, 0}, {0, r, 0},
+                                         {0, -r, 0}, {0, 0, r},  {0, 0, -r}};
+  const std::vector<std::array<int, 3>> triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                                     {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  return ddf::makeSupportMesh(points, triangles);
+}
+
+/// Vectors of length @p length along +z for every vertex of @p mesh.
+inline std::vector<ddf::Vec3> constantVectors(const ddf::SupportMesh& mesh,
+                                              const ddf::Vec3& v = {0, 0, 1}) {
+  return std::vector<ddf::Vec3>(mesh.n_vertices(), v);
+}
+
+/// Radial unit vectors (for meshes around the origin).
+inline std::vector<ddf::Vec3> radialVectors(const ddf::SupportMesh& mesh, double length = 1.0) {
+  std::vector<ddf::Vec3> out;
+  for (const auto vh : mesh.vertices()) out.push_back(ddf::toEigen(mesh.point(vh)).normalized() * length);
+  return out;
+}
+
+}  // namespace ddfcam::test
