@@ -4,6 +4,7 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/support_mesh.h>
+#include <ddfcam/ddf/triangle_mesh.h>
 
 #include <array>
 #include <vector>
@@ -45,6 +46,22 @@ inline std::vector<ddf::Vec3> radialVectors(const ddf::SupportMesh& mesh, double
   std::vector<ddf::Vec3> out;
   for (const auto vh : mesh.vertices()) out.push_back(ddf::toEigen(mesh.point(vh)).normalized() * length);
   return out;
+}
+
+/// Closed, outward-oriented axis-aligned box [lo, hi] as 12 triangles.
+inline ddf::TriangleMesh boxMesh(const ddf::Vec3& lo, const ddf::Vec3& hi) {
+  ddf::TriangleMesh box;
+  for (int c = 0; c < 8; ++c)
+    box.vertices.emplace_back(c & 1 ? hi.x() : lo.x(), c & 2 ? hi.y() : lo.y(),
+                              c & 4 ? hi.z() : lo.z());
+  // Quads (a, b, c, d) counter-clockwise seen from outside.
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    box.triangles.push_back({q[0], q[1], q[2]});
+    box.triangles.push_back({q[0], q[2], q[3]});
+  }
+  return box;
 }
 
 }  // namespace ddfcam::test
