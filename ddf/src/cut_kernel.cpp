@@ -160,7 +160,7 @@ int rowIntervals(const PairForms& forms, int k, int rowLength, KernelMode mode, 
 
 void cutRow(float* heights, int first, int last, const RowForms& r, float tol,
             KernelCounts& counts) {
-  std::size_t lowered = 0, clamped = 0;
+  unsigned lowered = 0, clamped = 0, hits = 0;  // 32-bit lanes keep the loop vectorisable
   for (int i = first; i <= last; ++i) {
     const float x = static_cast<float>(i);
     const float n = r.nb + x * r.ns, d = r.db + x * r.ds;
@@ -175,12 +175,16 @@ void cutRow(float* heights, int first, int last, const RowForms& r, float tol,
     heights[i] = lower ? hc : old;
     lowered += lower;
     clamped += lower & (h < -1.0f);
+    hits += hit & (h <= 1.0f);
   }
   counts.lowered += lowered;
   counts.clamped += clamped;
+  counts.hits += hits;
 }
 
-void fillRow(float* heights, int first, int last, const RowForms& r, float tol) {
+void fillRow(float* heights, int first, int last, const RowForms& r, float tol,
+             KernelCounts& counts) {
+  unsigned hits = 0;
   for (int i = first; i <= last; ++i) {
     const float x = static_cast<float>(i);
     const float n = r.nb + x * r.ns, d = r.db + x * r.ds;
@@ -190,10 +194,13 @@ void fillRow(float* heights, int first, int last, const RowForms& r, float tol) 
     const float l3 = r.ab[2] + x * r.as[2] + h * (r.bb[2] + x * r.bs[2]);
     const float old = heights[i];
     // NaN marks "no hit yet"; !(|old| <= |h|) is true for NaN and for a nearer hit.
-    const bool take = (d != 0.0f) & (l1 >= -tol) & (l2 >= -tol) & (l3 >= -tol) &
-                      (std::abs(h) <= 1.0f) & !(std::abs(old) <= std::abs(h));
+    const bool hit = (d != 0.0f) & (l1 >= -tol) & (l2 >= -tol) & (l3 >= -tol) &
+                     (std::abs(h) <= 1.0f);
+    const bool take = hit & !(std::abs(old) <= std::abs(h));
     heights[i] = take ? h : old;
+    hits += hit;
   }
+  counts.hits += hits;
 }
 
 }  // namespace ddfcam::ddf::detail

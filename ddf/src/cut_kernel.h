@@ -63,6 +63,7 @@ int rowIntervals(const PairForms& forms, int k, int rowLength, KernelMode mode, 
 struct KernelCounts {
   std::size_t lowered = 0;  ///< heights that changed
   std::size_t clamped = 0;  ///< hits below the crust bottom, clamped to -1
+  std::size_t hits = 0;     ///< stubbles that meet the tool triangle at a height that matters
 };
 
 /// @brief Cut mode kernel on heights[first..last] of one row.
@@ -70,6 +71,7 @@ void cutRow(float* heights, int first, int last, const RowForms& row, float lamb
             KernelCounts& counts);
 /// @brief Fill mode kernel on heights[first..last] of one row; heights hold NaN where no hit
 /// was found yet.
-void fillRow(float* heights, int first, int last, const RowForms& row, float lambdaTolerance);
+void fillRow(float* heights, int first, int last, const RowForms& row, float lambdaTolerance,
+             KernelCounts& counts);
 
 }  // namespace ddfcam::ddf::detail

@@ -8,8 +8,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "cut_kernel.h"
+#include "pair_scan.h"
 
 namespace ddfcam::ddf {
 namespace {
@@ -24,31 +26,68 @@ detail::FaceCorners cornersOf(const DisplacementField& ddf, int f) {
   return c;
 }
 
-// Runs the row kernel of one (face, triangle) pair over the whole face raster.
-void processPair(float* heights, const Raster& raster, const detail::PairForms& forms,
-                 KernelMode mode, const DepthBufferParams& params, KernelCounts& counts) {
-  const int n = raster.steps();
-  std::array<std::pair<int, int>, 5> ranges;
-  for (int k = 0; k <= n; ++k) {
-    const int length = raster.rowLength(k);
-    int count = 1;
-    if (params.restrictIntervals) {
-      count = detail::rowIntervals(forms, k, length, mode, params.lambdaTolerance, ranges);
-    } else {
-      ranges[0] = {0, length - 1};
-    }
-    if (count == 0) continue;
-    const detail::RowForms row = detail::rowForms(forms, k);
-    float* rowHeights = heights + raster.rowOffset(k);
-    for (int r = 0; r < count; ++r) {
-      if (mode == KernelMode::Cut) {
-        detail::cutRow(rowHeights, ranges[r].first, ranges[r].second, row,
-                       params.lambdaTolerance, counts);
-      } else {
-        detail::fillRow(rowHeights, ranges[r].first, ranges[r].second, row,
-                        params.lambdaTolerance);
-      }
-    }
+// The slab |n.(x - p1)| <= top around the support plane (n a unit normal) that contains the
+// +-1 crust of a face.
+struct CrustSlab {
+  Vec3 normal;
+  double top = 0.0;
+  double distance(const Vec3& x, const Vec3& p1) const { return normal.dot(x - p1); }
+};
+
+CrustSlab slabOf(const detail::FaceCorners& s) {
+  CrustSlab slab{(s.p[1] - s.p[0]).cross(s.p[2] - s.p[0]).normalized()};
+  for (const Vec3& v : s.v) slab.top = std::max(slab.top, std::abs(slab.normal.dot(v)));
+  return slab;
+}
+
+// Whether tool triangle q can meet the +-1 crust of face s at all.
+bool mayMeetCrust(const detail::FaceCorners& s, const std::array<Vec3, 3>& q) {
+  const CrustSlab slab = slabOf(s);
+  int above = 0, below = 0;
+  for (const Vec3& x : q) {
+    const double d = slab.distance(x, s.p[0]);
+    above += d > slab.top;
+    below += d < -slab.top;
+  }
+  return above < 3 && below < 3;
+}
+
+// A convex polygon of at most 5 corners: a triangle clipped by two planes.
+struct SmallPolygon {
+  std::array<Vec3, 6> corner;
+  int size = 0;
+};
+
+// Clips @p poly to the half-space {x : normal.(x - origin) <= limit}, keeping its orientation.
+void clipPolygon(SmallPolygon& poly, const Vec3& normal, const Vec3& origin, double limit) {
+  SmallPolygon out;
+  for (int i = 0; i < poly.size; ++i) {
+    const Vec3& a = poly.corner[i];
+    const Vec3& b = poly.corner[(i + 1) % poly.size];
+    const double da = normal.dot(a - origin) - limit, db = normal.dot(b - origin) - limit;
+    if (da <= 0.0) out.corner[out.size++] = a;
+    if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0))
+      out.corner[out.size++] = a + (b - a) * (da / (da - db));
+  }
+  poly = out;
+}
+
+// Forms and kernel for one (face, triangle) pair. The tool triangle is first clipped to the part
+// of space where its hits can matter: below the crust top for cuts (higher hits have h > 1),
+// inside the crust slab for fills. That keeps the projected triangle small, so the row range
+// seeded from its corners is tight.
+void processCandidate(float* heights, const Raster& raster, const detail::FaceCorners& s,
+                      const std::array<Vec3, 3>& q, KernelMode mode,
+                      const DepthBufferParams& params, KernelCounts& counts) {
+  if (!mayMeetCrust(s, q)) return;
+  const CrustSlab slab = slabOf(s);
+  SmallPolygon poly{{q[0], q[1], q[2]}, 3};
+  clipPolygon(poly, slab.normal, s.p[0], slab.top);
+  if (mode == KernelMode::Fill) clipPolygon(poly, -slab.normal, s.p[0], slab.top);
+  for (int i = 1; i + 1 < poly.size; ++i) {
+    const std::array<Vec3, 3> piece = {poly.corner[0], poly.corner[i], poly.corner[i + 1]};
+    const auto forms = detail::makePairForms(s, piece[0], piece[1], piece[2], raster.steps(), mode);
+    if (forms) detail::scanPair(heights, raster, s, piece, *forms, mode, params, counts);
   }
 }
 
@@ -58,15 +97,45 @@ struct PairGroups {
   std::vector<std::size_t> groupStart;     // start of each face's run, plus the end
 };
 
-PairGroups localize(const CrustHash& hash, std::span<const Vec3> corners,
-                    const ProgressCallback& progress) {
+// Candidate faces for the triangles from one query of their common bounding box, when that box
+// meets few faces (a tool at one pose); otherwise one hash query per triangle (a large mesh).
+constexpr std::size_t kBoxQueryFaceLimit = 256;
+
+void appendCandidates(const DisplacementField& ddf, const std::vector<int>& faces,
+                      std::span<const Vec3> corners, PairGroups& g) {
+  const std::size_t triangles = corners.size() / 3;
+  std::vector<Eigen::AlignedBox3d> triBoxes(triangles);
+  for (std::size_t t = 0; t < triangles; ++t)
+    for (int c = 0; c < 3; ++c) triBoxes[t].extend(corners[3 * t + c]);
+  for (int f : faces) {
+    const Eigen::AlignedBox3d crust = CrustHash::crustBox(ddf, f);
+    const detail::FaceCorners s = cornersOf(ddf, f);
+    for (std::size_t t = 0; t < triangles; ++t) {
+      if (!crust.intersects(triBoxes[t])) continue;
+      if (!mayMeetCrust(s, {corners[3 * t], corners[3 * t + 1], corners[3 * t + 2]})) continue;
+      g.pairs.emplace_back(f, static_cast<int>(t));
+    }
+  }
+}
+
+PairGroups localize(const DisplacementField& ddf, const CrustHash& hash,
+                    std::span<const Vec3> corners, const ProgressCallback& progress) {
   PairGroups g;
   std::vector<int> faces;
-  const std::size_t triangles = corners.size() / 3;
-  for (std::size_t t = 0; t < triangles; ++t) {
-    if (progress && t % 4096 == 0) reportProgress(progress, 0.2 * t / triangles);
-    hash.queryTriangle(corners[3 * t], corners[3 * t + 1], corners[3 * t + 2], faces);
-    for (int f : faces) g.pairs.emplace_back(f, static_cast<int>(t));
+  Eigen::AlignedBox3d all;
+  for (const Vec3& c : corners) all.extend(c);
+  hash.queryBox(all, faces);
+  if (faces.size() <= kBoxQueryFaceLimit) {
+    appendCandidates(ddf, faces, corners, g);
+  } else {
+    const std::size_t triangles = corners.size() / 3;
+    for (std::size_t t = 0; t < triangles; ++t) {
+      if (progress && t % 4096 == 0) reportProgress(progress, 0.2 * t / triangles);
+      const std::array<Vec3, 3> q = {corners[3 * t], corners[3 * t + 1], corners[3 * t + 2]};
+      hash.queryTriangle(q[0], q[1], q[2], faces);
+      for (int f : faces)
+        if (mayMeetCrust(cornersOf(ddf, f), q)) g.pairs.emplace_back(f, static_cast<int>(t));
+    }
   }
   std::sort(g.pairs.begin(), g.pairs.end());
   for (std::size_t i = 0; i < g.pairs.size(); ++i)
@@ -99,19 +168,16 @@ std::vector<int> groupFaces(const PairGroups& g) {
 
 std::size_t cutFaceByTriangle(DisplacementField& ddf, int face, const Vec3& q1, const Vec3& q2,
                               const Vec3& q3, const DepthBufferParams& params) {
-  const auto forms =
-      detail::makePairForms(cornersOf(ddf, face), q1, q2, q3, ddf.raster().steps(), KernelMode::Cut);
-  if (!forms) return 0;
   KernelCounts counts;
-  processPair(ddf.heights(face).data(), ddf.raster(), *forms, KernelMode::Cut, params, counts);
+  processCandidate(ddf.heights(face).data(), ddf.raster(), cornersOf(ddf, face), {q1, q2, q3},
+                   KernelMode::Cut, params, counts);
   return counts.lowered;
 }
 
 CutStats cutByTriangles(DisplacementField& ddf, const CrustHash& hash,
                         std::span<const Vec3> corners, const DepthBufferParams& params) {
-  const PairGroups groups = localize(hash, corners, {});
+  const PairGroups groups = localize(ddf, hash, corners, {});
   tbb::combinable<KernelCounts> totals;
-  const int n = ddf.raster().steps();
   forEachGroup(groups, params.parallel, [&](std::size_t gi) {
     const int face = groups.pairs[groups.groupStart[gi]].first;
     const detail::FaceCorners c = cornersOf(ddf, face);
@@ -119,9 +185,8 @@ CutStats cutByTriangles(DisplacementField& ddf, const CrustHash& hash,
     KernelCounts& counts = totals.local();
     for (std::size_t p = groups.groupStart[gi]; p < groups.groupStart[gi + 1]; ++p) {
       const std::size_t t = static_cast<std::size_t>(groups.pairs[p].second);
-      const auto forms = detail::makePairForms(c, corners[3 * t], corners[3 * t + 1],
-                                               corners[3 * t + 2], n, KernelMode::Cut);
-      if (forms) processPair(heights, ddf.raster(), *forms, KernelMode::Cut, params, counts);
+      processCandidate(heights, ddf.raster(), c, {corners[3 * t], corners[3 * t + 1], corners[3 * t + 2]},
+                       KernelMode::Cut, params, counts);
     }
   });
   CutStats stats;
@@ -150,7 +215,9 @@ CutStats cutByMesh(DisplacementField& ddf, const CrustHash& hash, const Triangle
 
 std::size_t cutFaceByTriangleDirect(DisplacementField& ddf, int face, const Vec3& q1,
                                     const Vec3& q2, const Vec3& q3) {
-  // Moller-Trumbore on the full line g + h v, entry side only, in double.
+  // Moller-Trumbore on the full line g + h v, entry side only, in double. Like localization,
+  // only tool triangles that reach into the crust slab take part.
+  if (!mayMeetCrust(cornersOf(ddf, face), {q1, q2, q3})) return 0;
   const Vec3 e1 = q2 - q1, e2 = q3 - q1;
   const Vec3 normal = e1.cross(e2);
   const Raster& raster = ddf.raster();
@@ -182,10 +249,9 @@ FillReport fillFromMesh(DisplacementField& ddf, const CrustHash& hash, const Tri
   corners.reserve(surface.triangles.size() * 3);
   for (const auto& t : surface.triangles)
     for (int c = 0; c < 3; ++c) corners.push_back(surface.vertices[t[c]]);
-  const PairGroups groups = localize(hash, corners, params.progress);
+  const PairGroups groups = localize(ddf, hash, corners, params.progress);
   std::vector<float> result(ddf.allHeights().size(), std::numeric_limits<float>::quiet_NaN());
   const std::size_t per = ddf.pointsPerFace();
-  const int n = ddf.raster().steps();
   const std::size_t groupCount = groups.groupStart.size() - 1;
   const std::size_t batch = std::max<std::size_t>(1, groupCount / 20);
   for (std::size_t begin = 0; begin < groupCount; begin += batch) {
@@ -198,11 +264,9 @@ FillReport fillFromMesh(DisplacementField& ddf, const CrustHash& hash, const Tri
         const detail::FaceCorners c = cornersOf(ddf, face);
         for (std::size_t p = groups.groupStart[gi]; p < groups.groupStart[gi + 1]; ++p) {
           const std::size_t t = static_cast<std::size_t>(groups.pairs[p].second);
-          const auto forms = detail::makePairForms(c, corners[3 * t], corners[3 * t + 1],
-                                                   corners[3 * t + 2], n, KernelMode::Fill);
-          if (forms)
-            processPair(result.data() + face * per, ddf.raster(), *forms, KernelMode::Fill,
-                        params.kernel, unused);
+          processCandidate(result.data() + face * per, ddf.raster(), c,
+                           {corners[3 * t], corners[3 * t + 1], corners[3 * t + 2]},
+                           KernelMode::Fill, params.kernel, unused);
         }
       }
     });

@@ -59,39 +59,50 @@ Vec3 DisplacementField::surfacePoint(int f, int i, int k) const {
   return pointAt(f, rasterBary(i, k), height(f, i, k));
 }
 
+namespace {
+
+// Value all copies take: the minimum, or the copy of the lowest-index face.
+struct SharedValue {
+  SharedPolicy policy;
+  float value = std::numeric_limits<float>::infinity();
+  int face = std::numeric_limits<int>::max();
+  void add(int f, float h) {
+    if (policy == SharedPolicy::Minimum) {
+      value = std::min(value, h);
+    } else if (f < face) {
+      face = f, value = h;
+    }
+  }
+};
+
+}  // namespace
+
 void DisplacementField::syncEdge(int edge, SharedPolicy policy) {
   const auto& sides = topology_.edgeFaces(edge);
   if (sides[0] < 0 || sides[1] < 0) return;
   const int n = raster().steps();
+  const int e0 = topology_.localEdgeOf(sides[0], edge), e1 = topology_.localEdgeOf(sides[1], edge);
+  float* h0 = heights(sides[0]).data();
+  float* h1 = heights(sides[1]).data();
   for (int t = 1; t < n; ++t) {
-    const PointId p = topology_.edgePointId(edge, t);
-    float value = std::numeric_limits<float>::infinity();
-    int bestFace = std::numeric_limits<int>::max();
-    topology_.forEachCopy(p, [&](PointCopy c) {
-      const float h = heights_[c.face * pointsPerFace_ + c.local];
-      if (policy == SharedPolicy::Minimum) {
-        value = std::min(value, h);
-      } else if (c.face < bestFace) {
-        bestFace = c.face, value = h;
-      }
-    });
-    topology_.forEachCopy(p, [&](PointCopy c) { heights_[c.face * pointsPerFace_ + c.local] = value; });
+    float& a = h0[topology_.edgeCopyLocal(sides[0], e0, t)];
+    float& b = h1[topology_.edgeCopyLocal(sides[1], e1, t)];
+    SharedValue shared{policy};
+    shared.add(sides[0], a);
+    shared.add(sides[1], b);
+    a = b = shared.value;
   }
 }
 
 void DisplacementField::syncVertex(int vertex, SharedPolicy policy) {
-  float value = std::numeric_limits<float>::infinity();
-  int bestFace = std::numeric_limits<int>::max();
-  const auto p = static_cast<PointId>(vertex);
-  topology_.forEachCopy(p, [&](PointCopy c) {
-    const float h = heights_[c.face * pointsPerFace_ + c.local];
-    if (policy == SharedPolicy::Minimum) {
-      value = std::min(value, h);
-    } else if (c.face < bestFace) {
-      bestFace = c.face, value = h;
-    }
-  });
-  topology_.forEachCopy(p, [&](PointCopy c) { heights_[c.face * pointsPerFace_ + c.local] = value; });
+  const int n = raster().steps();
+  auto localIndex = [&](int f) {
+    const auto& fv = faceVertices_[f];
+    return raster().index(fv[0] == vertex ? n : 0, fv[2] == vertex ? n : 0);
+  };
+  SharedValue shared{policy};
+  for (int f : topology_.vertexFaces(vertex)) shared.add(f, heights(f)[localIndex(f)]);
+  for (int f : topology_.vertexFaces(vertex)) heights(f)[localIndex(f)] = shared.value;
 }
 
 void DisplacementField::synchronizeShared(SharedPolicy policy) {

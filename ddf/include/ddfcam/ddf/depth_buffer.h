@@ -38,6 +38,9 @@ struct CutStats {
 
 /// @brief Cuts @p ddf by the closed, outward-oriented triangle mesh @p tool placed at @p pose
 /// (tool frame -> part frame): every stubble entering the tool gets h = min(h, max(h_tool, -1)).
+/// Only tool triangles that reach into a face's crust slab cut it (localization, sec. 5.1); an
+/// entry below the crust bottom clamps to h = -1, so a tool plunged through the whole crust
+/// removes it as long as its surface crosses the crust nearby (as a continuous motion does).
 /// Exit faces are skipped (back-face culling of the depth buffer), so a tool with inward
 /// orientation is flipped first (negative signed volume). Shared edge and vertex copies are
 /// synchronized afterwards (minimum).

@@ -48,6 +48,11 @@ class RasterTopology {
     const std::size_t perEdge = static_cast<std::size_t>(raster_.steps()) - 1;
     return static_cast<PointId>(vertexCount_ + static_cast<std::size_t>(edge) * perEdge + (t - 1));
   }
+  /// @brief Local raster index in @p face of the point t steps (0..m-1) from the lower-index
+  /// vertex of the face's local edge @p localEdge.
+  std::uint32_t edgeCopyLocal(int face, int localEdge, int t) const;
+  /// @brief Local edge (0..2) of @p face that is mesh edge @p edge, or -1.
+  int localEdgeOf(int face, int edge) const;
   /// @brief Calls @p fn(PointCopy) for every stored copy of @p p.
   template <class Fn>
   void forEachCopy(PointId p, Fn&& fn) const;
@@ -64,8 +69,6 @@ class RasterTopology {
 
  private:
   void forEachCopyImpl(PointId p, const std::function<void(PointCopy)>& fn) const;
-  std::uint32_t edgeCopyLocal(int face, int localEdge, int t) const;
-  int localEdgeOf(int face, int edge) const;
 
   Raster raster_;
   std::size_t vertexCount_ = 0;

@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: MIT
+// ddfcam-cli: the subcommands; each takes the words after its name and returns the exit code.
+#pragma once
+
+#include <span>
+#include <string>
+
+namespace ddfcam::cli {
+
+/// @brief A subcommand: name, one-line summary, full help text and entry point.
+struct Command {
+  const char* name;
+  const char* summary;
+  const char* help;
+  /// Runs the command; throws ddfcam::Error (UsageError for bad arguments) on failure.
+  int (*run)(std::span<const std::string> args);
+};
+
+extern const Command kConvertCommand;
+extern const Command kExtractCommand;
+extern const Command kInfoCommand;
+extern const Command kDemoCommand;
+
+}  // namespace ddfcam::cli

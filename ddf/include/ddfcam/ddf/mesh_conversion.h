@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+// ddfcam: baseline conversion of a triangle mesh into a DDF with the mesh as support (ch. 6).
+#pragma once
+
+#include <ddfcam/ddf/displacement_field.h>
+#include <ddfcam/ddf/pseudo_normals.h>
+#include <ddfcam/ddf/triangle_mesh.h>
+#include <ddfcam/ddf/vector_lengths.h>
+#include <ddfcam/progress.h>
+
+#include <vector>
+
+namespace ddfcam::ddf {
+
+/// @brief Parameters of the mesh to DDF conversion.
+struct ConversionParams {
+  /// Raster resolution m of the DDF (points per support edge, >= 2). Default 10.
+  int resolution = 10;
+  /// Vertices closer than this are welded into one, mm; 0 = 1e-9 x the bounding-box diagonal
+  /// (merges exact duplicates as in an unwelded STL). Default 0.
+  double weldToleranceMm = 0.0;
+  /// Direction repair margin for constraint 1. Default: PseudoNormalParams defaults.
+  PseudoNormalParams normals;
+  /// Choice of vector lengths (sec. 4.4). Default: VectorLengthParams defaults. Its progress
+  /// callback is replaced by a share of @ref progress.
+  VectorLengthParams lengths;
+  /// Progress in [0, 1] and cancellation (throws Cancelled). Default none.
+  ProgressCallback progress;
+};
+
+/// @brief The converted DDF and what the conversion had to give up.
+struct ConversionResult {
+  DisplacementField ddf;                ///< support = the welded input mesh, heights 0
+  int droppedFaces = 0;                 ///< triangles OpenMesh rejected (non-manifold, flipped)
+  int degenerateFaces = 0;              ///< triangles dropped for a repeated vertex or zero area
+  int weldedVertices = 0;               ///< input vertices merged into another one
+  std::vector<int> sourceTriangle;      ///< per DDF face, the index of its input triangle
+  std::vector<int> repairedVertices;    ///< DDF vertices whose direction left the pseudo-normal
+  std::vector<int> infeasibleVertices;  ///< DDF vertices with no front-facing direction
+  VectorLengthReport lengths;           ///< report of the vector length choice
+};
+
+/// @brief Converts @p mesh into a DDF whose support is the mesh itself (the baseline of ch. 6).
+///
+/// Steps: weld vertices; drop triangles with a repeated vertex or zero area; build the support
+/// mesh, dropping (with a warning through ddfcam::log) the triangles OpenMesh rejects as
+/// non-manifold or inconsistently oriented, and unused vertices; directions = angle-weighted
+/// pseudo-normals repaired for constraint 1; lengths by chooseVectorLengths. Every height is
+/// 0: the raster points lie on the support, which is the mesh itself, so the DDF represents the
+/// mesh exactly at its raster points. Setting heights from another surface along the stubbles
+/// is a separate fill operation.
+/// @throws InvalidInput for a bad resolution, an index out of range, or when no triangle
+/// survives. @throws Cancelled through params.progress.
+ConversionResult convertMeshToDdf(const TriangleMesh& mesh, const ConversionParams& params = {});
+
+}  // namespace ddfcam::ddf

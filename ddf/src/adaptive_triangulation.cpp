@@ -1,0 +1,298 @@
+// SPDX-License-Identifier: MIT
+// ddfcam: adaptive triangulation of a DDF-represented surface: phases and mesh assembly.
+#include <ddfcam/ddf/adaptive_triangulation.h>
+#include <ddfcam/error.h>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include <algorithm>
+#include <string>
+
+#include "adaptive_face.h"
+#include "canonical_points.h"
+
+namespace ddfcam::ddf {
+namespace {
+
+using detail::FaceResult;
+
+// Runs fn(face) over all faces in parallel blocks; progress is reported between blocks from
+// the calling thread, mapped to [lo, hi].
+template <class Fn>
+void forFaceBlocks(const DisplacementField& ddf, const ProgressCallback& progress, double lo,
+                   double hi, Fn&& fn) {
+  const int faces = ddf.faceCount();
+  // About 2^18 raster points per block keeps progress calls frequent at every m.
+  const std::size_t points = std::max<std::size_t>(ddf.pointsPerFace(), 1);
+  const int block = std::max<int>(1, static_cast<int>((std::size_t{1} << 18) / points));
+  reportProgress(progress, lo);
+  for (int begin = 0; begin < faces; begin += block) {
+    const int end = std::min(faces, begin + block);
+    tbb::parallel_for(tbb::blocked_range<int>(begin, end), [&](const auto& range) {
+      for (int f = range.begin(); f != range.end(); ++f) fn(f);
+    });
+    reportProgress(progress, lo + (hi - lo) * end / faces);
+  }
+}
+
+// A mesh vertex inside a support edge: the edge, its canonical scaled position, its index.
+struct SupportVertex {
+  std::uint32_t edge;
+  std::int64_t t;
+  int vertex;
+  bool operator<(const SupportVertex& o) const { return edge != o.edge ? edge < o.edge : t < o.t; }
+};
+
+// A face vertex on the border of its face, keyed by its place on the support: support vertex
+// v -> (~0 << 32 | v), point t inside support edge e -> (e << 32 | t).
+struct BorderSlot {
+  std::uint64_t key;
+  int face;
+  int slot;
+  bool operator<(const BorderSlot& o) const {
+    return key != o.key ? key < o.key : face != o.face ? face < o.face : slot < o.slot;
+  }
+};
+
+constexpr std::uint64_t kVertexKey = std::uint64_t{0xffffffff} << 32;
+
+std::uint64_t borderKey(const DisplacementField& ddf, std::int64_t S, int f,
+                        const detail::FaceVertex& v) {
+  const std::int64_t n = ddf.raster().steps(), NS = n * S;
+  const int side = detail::borderSide(v.I, v.K, NS);
+  if (side >= 0) {
+    return (static_cast<std::uint64_t>(ddf.topology().faceEdge(f, side)) << 32) |
+           static_cast<std::uint64_t>(detail::canonicalT(ddf, f, side, v.I, v.K, NS));
+  }
+  if (v.I % S != 0 || v.K % S != 0) return 0;  // inner point
+  const int i = static_cast<int>(v.I / S), k = static_cast<int>(v.K / S);
+  if (i != n && k != n && i + k != 0) return 0;
+  return kVertexKey | ddf.topology().id(f, i, k);
+}
+
+// Mesh vertices for all face vertices: points on the support's vertices and edges once (keyed
+// by their place; both faces computed them bitwise identically), inner points per face. Returns
+// the vertices inside every support edge in edge order.
+std::vector<SupportVertex> numberVertices(const DisplacementField& ddf, std::int64_t S,
+                                          std::vector<FaceResult>& results,
+                                          std::vector<Vec3>& vertices) {
+  const int faces = ddf.faceCount();
+  std::vector<std::size_t> borderOffset(faces + 1, 0), innerOffset(faces + 1, 0);
+  tbb::parallel_for(0, faces, [&](int f) {
+    FaceResult& r = results[f];
+    r.vertexIndex.assign(r.vertices.size(), -1);
+    std::size_t border = 0;
+    for (const auto& v : r.vertices) border += borderKey(ddf, S, f, v) != 0 ? 1 : 0;
+    borderOffset[f + 1] = border;
+    innerOffset[f + 1] = r.vertices.size() - border;
+  });
+  for (int f = 0; f < faces; ++f) {
+    borderOffset[f + 1] += borderOffset[f];
+    innerOffset[f + 1] += innerOffset[f];
+  }
+  std::vector<BorderSlot> border(borderOffset[faces]);
+  tbb::parallel_for(0, faces, [&](int f) {
+    std::size_t at = borderOffset[f];
+    for (std::size_t v = 0; v < results[f].vertices.size(); ++v) {
+      const std::uint64_t key = borderKey(ddf, S, f, results[f].vertices[v]);
+      if (key != 0) border[at++] = {key, f, static_cast<int>(v)};
+    }
+  });
+  tbb::parallel_sort(border.begin(), border.end());
+  std::vector<SupportVertex> onEdges;
+  for (std::size_t b = 0; b < border.size(); ++b) {
+    if (b == 0 || border[b].key != border[b - 1].key) {
+      const auto& first = results[border[b].face].vertices[border[b].slot];
+      vertices.push_back(first.position);
+      if ((border[b].key & kVertexKey) != kVertexKey) {
+        onEdges.push_back({static_cast<std::uint32_t>(border[b].key >> 32),
+                           static_cast<std::int64_t>(border[b].key & 0xffffffffu),
+                           static_cast<int>(vertices.size()) - 1});
+      }
+    }
+    results[border[b].face].vertexIndex[border[b].slot] = static_cast<int>(vertices.size()) - 1;
+  }
+  const std::size_t base = vertices.size();
+  vertices.resize(base + innerOffset[faces]);
+  tbb::parallel_for(0, faces, [&](int f) {
+    FaceResult& r = results[f];
+    std::size_t at = base + innerOffset[f];
+    for (std::size_t v = 0; v < r.vertices.size(); ++v) {
+      if (r.vertexIndex[v] >= 0) continue;
+      vertices[at] = r.vertices[v].position;
+      r.vertexIndex[v] = static_cast<int>(at++);
+    }
+  });
+  return onEdges;
+}
+
+// T-vertex removal: every leaf collects the vertices inside its edges (splits nest, so inside
+// a support edge these are exactly the listed vertices strictly between its ends, made by
+// either face) and is re-triangulated: fanned from the opposite corner when one edge carries
+// vertices, else around its centroid on the flat leaf triangle.
+struct TVertexRemoval {
+  const DisplacementField* ddf;
+  const detail::AdaptiveContext* ctx;
+  const std::vector<SupportVertex>* onEdges;
+  const std::vector<Vec3>* vertices;
+
+  void supportChain(int f, const FaceResult& r, int side, int from, int to,
+                    std::vector<int>& out) const {
+    const std::int64_t NS = ddf->raster().steps() * ctx->scale;
+    const auto& a = r.vertices[from];
+    const auto& b = r.vertices[to];
+    const std::int64_t ta = detail::canonicalT(*ddf, f, side, a.I, a.K, NS);
+    const std::int64_t tb = detail::canonicalT(*ddf, f, side, b.I, b.K, NS);
+    const auto edge = static_cast<std::uint32_t>(ddf->topology().faceEdge(f, side));
+    const auto first = std::upper_bound(onEdges->begin(), onEdges->end(),
+                                        SupportVertex{edge, std::min(ta, tb), 0});
+    const auto last =
+        std::lower_bound(first, onEdges->end(), SupportVertex{edge, std::max(ta, tb), 0});
+    const std::size_t begin = out.size();
+    (void)first; (void)last;
+    if (ta > tb) std::reverse(out.begin() + begin, out.end());
+  }
+
+  void retriangulate(int f, FaceResult& r, std::vector<int>& poly) const {
+    r.triangles.clear();
+    r.centroids.clear();
+    for (const auto& leaf : r.leaves) {
+      poly.clear();
+      std::array<int, 3> cornerAt{};
+      int splitEdges = 0, lastSplit = 0;
+      for (int s = 0; s < 3; ++s) {
+        cornerAt[s] = static_cast<int>(poly.size());
+        poly.push_back(r.vertexIndex[leaf.corner[s]]);
+        const std::size_t before = poly.size();
+        if (leaf.supportMask & (1u << s)) {
+          const int side = supportSide(r, leaf.corner[s], leaf.corner[(s + 1) % 3]);
+          supportChain(f, r, side, leaf.corner[s], leaf.corner[(s + 1) % 3], poly);
+        } else {
+          for (int c = leaf.chainBegin[s]; c < leaf.chainEnd[s]; ++c)
+            poly.push_back(r.vertexIndex[r.chain[c]]);
+        }
+        if (poly.size() > before) ++splitEdges, lastSplit = s;
+      }
+      emitPolygon(r, poly, cornerAt, splitEdges, lastSplit);
+    }
+    for (const auto& t : r.finals)
+      r.triangles.push_back({r.vertexIndex[t[0]], r.vertexIndex[t[1]], r.vertexIndex[t[2]]});
+  }
+
+  // Local support side shared by two border vertices of a face.
+  int supportSide(const FaceResult& r, int u, int v) const {
+    const std::int64_t NS = ddf->raster().steps() * ctx->scale;
+    const auto& a = r.vertices[u];
+    const auto& b = r.vertices[v];
+    if (a.K == 0 && b.K == 0) return 0;
+    if (a.I == 0 && b.I == 0) return 1;
+    (void)NS;
+    return 2;
+  }
+
+  void emitPolygon(FaceResult& r, const std::vector<int>& poly, const std::array<int, 3>& cornerAt,
+                   int splitEdges, int lastSplit) const {
+    const int count = static_cast<int>(poly.size());
+    if (splitEdges == 0) {
+      r.triangles.push_back({poly[0], poly[1], poly[2]});
+    } else if (splitEdges == 1) {
+      const int apex = poly[cornerAt[(lastSplit + 2) % 3]];
+      const int end = lastSplit == 2 ? count : cornerAt[lastSplit + 1];
+      for (int p = cornerAt[lastSplit]; p < end; ++p)
+        r.triangles.push_back({poly[p], poly[(p + 1) % count], apex});
+    } else {
+      const auto& vs = *vertices;
+      const int centroid = -static_cast<int>(r.centroids.size()) - 1;
+      r.centroids.push_back(
+          (vs[poly[cornerAt[0]]] + vs[poly[cornerAt[1]]] + vs[poly[cornerAt[2]]]) / 3.0);
+      for (int p = 0; p < count; ++p)
+        r.triangles.push_back({poly[p], poly[(p + 1) % count], centroid});
+    }
+  }
+};
+
+void leafTriangles(FaceResult& r) {
+  r.triangles.clear();
+  for (const auto& leaf : r.leaves)
+    r.triangles.push_back({r.vertexIndex[leaf.corner[0]], r.vertexIndex[leaf.corner[1]],
+                           r.vertexIndex[leaf.corner[2]]});
+  for (const auto& t : r.finals)
+    r.triangles.push_back({r.vertexIndex[t[0]], r.vertexIndex[t[1]], r.vertexIndex[t[2]]});
+}
+
+void concatenate(std::vector<FaceResult>& results, AdaptiveTriangulation& out) {
+  std::size_t triangles = 0;
+  for (const auto& r : results) triangles += r.triangles.size();
+  out.mesh.triangles.reserve(triangles);
+  out.triangleFace.reserve(triangles);
+  for (int f = 0; f < static_cast<int>(results.size()); ++f) {
+    FaceResult& r = results[f];
+    const int base = static_cast<int>(out.mesh.vertices.size());
+    out.mesh.vertices.insert(out.mesh.vertices.end(), r.centroids.begin(), r.centroids.end());
+    for (auto t : r.triangles) {
+      for (int& v : t)
+        if (v < 0) v = base - v - 1;
+      out.mesh.triangles.push_back(t);
+      out.triangleFace.push_back(f);
+    }
+    out.leafTriangles += r.leaves.size() + r.finals.size();
+    out.maxErrorMm = std::max(out.maxErrorMm, r.maxError);
+    r = FaceResult{};  // release memory early
+  }
+}
+
+}  // namespace
+
+AdaptiveTriangulation triangulateAdaptiveWithStats(const DisplacementField& ddf,
+                                                   const AdaptiveTriangulationParams& params) {
+  if (!(params.epsMm > 0.0)) {
+    throw InvalidInput("adaptive triangulation: error bound epsMm must be positive, got " +
+                       std::to_string(params.epsMm));
+  }
+  const detail::PointOwners owners(ddf);
+  const std::vector<Vec3> boundary = detail::canonicalBoundaryPoints(ddf, owners);
+  detail::AdaptiveContext ctx;
+  ctx.ddf = &ddf;
+  ctx.boundary = &boundary;
+  ctx.eps = params.epsMm;
+  ctx.collectChains = params.removeTVertices;
+  while (ctx.scale < ddf.raster().steps()) ctx.scale *= 2;
+
+  std::vector<FaceResult> results(ddf.faceCount());
+  tbb::enumerable_thread_specific<detail::FaceSubdivider> workers(
+      [&] { return detail::FaceSubdivider(ctx); });
+  forFaceBlocks(ddf, params.progress, 0.0, 0.8, [&](int f) { workers.local().run(f, results[f]); });
+
+  AdaptiveTriangulation out;
+  const std::vector<SupportVertex> onEdges =
+      numberVertices(ddf, ctx.scale, results, out.mesh.vertices);
+  if (params.removeTVertices) {
+    const TVertexRemoval removal{&ddf, &ctx, &onEdges, &out.mesh.vertices};
+    tbb::enumerable_thread_specific<std::vector<int>> polygons;
+    forFaceBlocks(ddf, params.progress, 0.8, 0.95,
+                  [&](int f) { removal.retriangulate(f, results[f], polygons.local()); });
+  } else {
+    forFaceBlocks(ddf, params.progress, 0.8, 0.95, [&](int f) { leafTriangles(results[f]); });
+  }
+  concatenate(results, out);
+  reportProgress(params.progress, 1.0);
+  return out;
+}
+
+TriangleMesh triangulateAdaptive(const DisplacementField& ddf,
+                                 const AdaptiveTriangulationParams& params) {
+  return triangulateAdaptiveWithStats(ddf, params).mesh;
+}
+
+std::size_t adaptiveTriangleCount(const DisplacementField& ddf, double epsMm,
+                                  bool removeTVertices) {
+  AdaptiveTriangulationParams params;
+  params.epsMm = epsMm;
+  params.removeTVertices = removeTVertices;
+  return triangulateAdaptiveWithStats(ddf, params).mesh.triangles.size();
+}
+
+}  // namespace ddfcam::ddf

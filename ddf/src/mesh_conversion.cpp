@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: MIT
+// ddfcam: mesh -> DDF baseline conversion (weld, manifold support, pseudo-normals, lengths).
+#include <ddfcam/ddf/mesh_conversion.h>
+#include <ddfcam/error.h>
+#include <ddfcam/log.h>
+
+#include <Eigen/Geometry>
+#include <OpenMesh/Core/System/omstream.hh>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <unordered_map>
+
+namespace ddfcam::ddf {
+namespace {
+
+struct CellHash {
+  std::size_t operator()(const std::array<long long, 3>& c) const {
+    return static_cast<std::size_t>(c[0] * 73856093LL ^ c[1] * 19349663LL ^ c[2] * 83492791LL);
+  }
+};
+
+/// Index of the representative (first vertex within @p tol) of every input vertex.
+std::vector<int> weldVertices(const std::vector<Vec3>& points, double tol) {
+  std::unordered_map<std::array<long long, 3>, std::vector<int>, CellHash> grid;
+  std::vector<int> rep(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec3& p = points[i];
+    const std::array<long long, 3> c = {static_cast<long long>(std::floor(p.x() / tol)),
+                                        static_cast<long long>(std::floor(p.y() / tol)),
+                                        static_cast<long long>(std::floor(p.z() / tol))};
+    int found = -1;
+    for (int d = 0; d < 27 && found < 0; ++d) {
+      const auto it = grid.find({c[0] + d % 3 - 1, c[1] + d / 3 % 3 - 1, c[2] + d / 9 - 1});
+      if (it == grid.end()) continue;
+      for (int j : it->second)
+        if ((points[j] - p).norm() <= tol) {
+          found = j;
+          break;
+        }
+    }
+    rep[i] = found >= 0 ? found : static_cast<int>(i);
+    if (found < 0) grid[c].push_back(static_cast<int>(i));
+  }
+  return rep;
+}
+
+bool degenerate(const std::array<int, 3>& t, const std::vector<Vec3>& p) {
+  if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) return true;
+  const Vec3 e1 = p[t[1]] - p[t[0]], e2 = p[t[2]] - p[t[0]];
+  const double longest = std::max({e1.squaredNorm(), e2.squaredNorm(), (e2 - e1).squaredNorm()});
+  return !(e1.cross(e2).norm() > 1e-12 * longest);
+}
+
+/// Which candidate triangles OpenMesh accepts, added in order (its own error stream muted).
+std::vector<char> manifoldAcceptance(const std::vector<Vec3>& points,
+                                     const std::vector<std::array<int, 3>>& triangles) {
+  SupportMesh scratch;
+  std::vector<SupportMesh::VertexHandle> vh;
+  vh.reserve(points.size());
+  for (const Vec3& p : points) vh.push_back(scratch.add_vertex(toOpenMesh(p)));
+  const bool wasEnabled = omerr().is_enabled();
+  omerr().disable();
+  std::vector<char> accepted(triangles.size());
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const auto& t = triangles[i];
+    accepted[i] = scratch.add_face(vh[t[0]], vh[t[1]], vh[t[2]]).is_valid();
+  }
+  if (wasEnabled) omerr().enable();
+  return accepted;
+}
+
+void checkInput(const TriangleMesh& mesh, const ConversionParams& params) {
+  if (params.resolution < 2)
+    throw InvalidInput("mesh conversion: resolution must be >= 2, got " +
+                       std::to_string(params.resolution));
+  const int n = static_cast<int>(mesh.vertices.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (int v : mesh.triangles[f])
+      if (v < 0 || v >= n)
+        throw InvalidInput("mesh conversion: triangle " + std::to_string(f) + " refers to vertex " +
+                           std::to_string(v) + " of " + std::to_string(n));
+}
+
+/// Welded, non-degenerate triangles and the input index of each.
+struct Candidates {
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<int> source;
+};
+
+Candidates weldedCandidates(const TriangleMesh& mesh, const ConversionParams& params,
+                            ConversionResult& result) {
+  const auto box = mesh.bounds();
+  const double diag = (box[1] - box[0]).norm();
+  const double tol =
+      params.weldToleranceMm > 0.0 ? params.weldToleranceMm : std::max(1e-9 * diag, 1e-300);
+  const auto rep = weldVertices(mesh.vertices, tol);
+  for (std::size_t i = 0; i < rep.size(); ++i) result.weldedVertices += rep[i] != int(i);
+  Candidates out;
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const auto& t = mesh.triangles[f];
+    const std::array<int, 3> w = {rep[t[0]], rep[t[1]], rep[t[2]]};
+    if (degenerate(w, mesh.vertices)) {
+      ++result.degenerateFaces;
+      continue;
+    }
+    out.triangles.push_back(w);
+    out.source.push_back(static_cast<int>(f));
+  }
+  return out;
+}
+
+/// Drops the candidates OpenMesh rejects and builds the support from the used vertices only.
+SupportMesh buildSupport(const TriangleMesh& mesh, const ConversionParams& params,
+                         ConversionResult& result) {
+  const Candidates cand = weldedCandidates(mesh, params, result);
+  const auto accepted = manifoldAcceptance(mesh.vertices, cand.triangles);
+  std::vector<int> compact(mesh.vertices.size(), -1);
+  std::vector<Vec3> points;
+  std::vector<std::array<int, 3>> triangles;
+  int firstDropped = -1;
+  for (std::size_t i = 0; i < cand.triangles.size(); ++i) {
+    if (!accepted[i]) {
+      if (result.droppedFaces++ == 0) firstDropped = cand.source[i];
+      continue;
+    }
+    std::array<int, 3> t;
+    for (int k = 0; k < 3; ++k) {
+      const int v = cand.triangles[i][k];
+      if (compact[v] < 0)
+        compact[v] = static_cast<int>(points.size()), points.push_back(mesh.vertices[v]);
+      t[k] = compact[v];
+    }
+    triangles.push_back(t);
+    result.sourceTriangle.push_back(cand.source[i]);
+  }
+  if (result.droppedFaces > 0)
+    log(LogLevel::Warning, "mesh conversion: dropped " + std::to_string(result.droppedFaces) +
+                               " triangles that make the support non-manifold or flip its "
+                               "orientation (first: input triangle " +
+                               std::to_string(firstDropped) + ")");
+  if (triangles.empty()) throw InvalidInput("mesh conversion: no usable triangle in the mesh");
+  return makeSupportMesh(points, triangles);
+}
+
+}  // namespace
+
+ConversionResult convertMeshToDdf(const TriangleMesh& mesh, const ConversionParams& params) {
+  checkInput(mesh, params);
+  ConversionResult result;
+  reportProgress(params.progress, 0.0);
+  SupportMesh support = buildSupport(mesh, params, result);
+  reportProgress(params.progress, 0.1);
+  auto normals = pseudoNormals(support, params.normals);
+  result.repairedVertices = std::move(normals.repairedVertices);
+  result.infeasibleVertices = std::move(normals.infeasibleVertices);
+  if (!result.infeasibleVertices.empty())
+    log(LogLevel::Warning, "mesh conversion: " + std::to_string(result.infeasibleVertices.size()) +
+                               " vertices have no front-facing direction (first: vertex " +
+                               std::to_string(result.infeasibleVertices.front()) + ")");
+  result.ddf =
+      DisplacementField(std::move(support), std::move(normals.normals), params.resolution, 0.0f);
+  reportProgress(params.progress, 0.2);
+  VectorLengthParams lengths = params.lengths;
+  if (params.progress) lengths.progress = [&](double x) { return params.progress(0.2 + 0.8 * x); };
+  result.lengths = chooseVectorLengths(result.ddf, lengths);
+  reportProgress(params.progress, 1.0);
+  return result;
+}
+
+}  // namespace ddfcam::ddf

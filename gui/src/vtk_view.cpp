@@ -1,0 +1,264 @@
+// SPDX-License-Identifier: MIT
+// ddfcam gui: VtkView, the QOpenGLWidget <-> vtkGenericOpenGLRenderWindow bridge.
+#include <ddfcam/gui/vtk_view.h>
+
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
+#include <QWheelEvent>
+
+#include <vtkCamera.h>
+#include <vtkCommand.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkGenericRenderWindowInteractor.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkLightKit.h>
+#include <vtkOpenGLFramebufferObject.h>
+#include <vtkOpenGLState.h>
+#include <vtkRenderer.h>
+
+#include <cmath>
+
+namespace ddfcam::gui {
+
+namespace {
+constexpr double kBackground[3] = {0.20, 0.22, 0.27};
+}  // namespace
+
+VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
+  renderWindow_ = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  interactor_ = vtkSmartPointer<vtkGenericRenderWindowInteractor>::New();
+  renderer_ = vtkSmartPointer<vtkRenderer>::New();
+
+  renderer_->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
+  renderer_->GradientBackgroundOff();
+  // Key, fill and back lights that follow the camera read curvature better than one headlight.
+  auto lights = vtkSmartPointer<vtkLightKit>::New();
+  lights->AddLightsToRenderer(renderer_);
+  renderWindow_->AddRenderer(renderer_);
+  // Qt owns the context and the final framebuffer: VTK renders offscreen and we blit.
+  renderWindow_->SetOwnContext(false);
+  renderWindow_->SetFrameBlitModeToNoBlit();
+  renderWindow_->SetReadyForRendering(false);
+  renderWindow_->SetMultiSamples(4);
+  renderWindow_->SetForceMaximumHardwareLineWidth(1);
+
+  for (auto event : {vtkCommand::WindowMakeCurrentEvent, vtkCommand::WindowIsCurrentEvent,
+                     vtkCommand::WindowSupportsOpenGLEvent, vtkCommand::WindowIsDirectEvent})
+    renderWindow_->AddObserver(event, this, &VtkView::onGlEvent);
+
+  auto style = vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New();
+  interactor_->SetInteractorStyle(style);
+  interactor_->SetRenderWindow(renderWindow_);
+  // Rendering is driven by Qt: an interactor render request becomes a widget update.
+  interactor_->EnableRenderOff();
+  interactor_->AddObserver(vtkCommand::RenderEvent, this, &VtkView::onGlEvent);
+  interactor_->Initialize();
+
+  setUpdateBehavior(QOpenGLWidget::NoPartialUpdate);
+  setFocusPolicy(Qt::StrongFocus);
+  setMouseTracking(false);
+  setMinimumSize(160, 120);
+}
+
+VtkView::~VtkView() {
+  // Trap 3: the context outlives us briefly; a late aboutToBeDestroyed would call into a
+  // half-destroyed object, and VTK must release its GL objects while the context still exists.
+  if (contextDestroyed_) QObject::disconnect(contextDestroyed_);
+  releaseGraphics();
+  renderWindow_->RemoveAllObservers();
+  interactor_->RemoveAllObservers();
+}
+
+vtkRenderer* VtkView::renderer() const {
+  return renderer_;
+}
+vtkGenericOpenGLRenderWindow* VtkView::renderWindow() const {
+  return renderWindow_;
+}
+
+QColor VtkView::backgroundColor() const {
+  return QColor::fromRgbF(static_cast<float>(kBackground[0]), static_cast<float>(kBackground[1]),
+                          static_cast<float>(kBackground[2]));
+}
+
+void VtkView::fitCamera() {
+  renderer_->ResetCamera();
+  requestRender();
+}
+
+void VtkView::fitCameraFrom(double dx, double dy, double dz, double upX, double upY, double upZ) {
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(dx, dy, dz);
+  camera->SetViewUp(upX, upY, upZ);
+  camera->OrthogonalizeViewUp();
+  fitCamera();
+}
+
+void VtkView::requestRender() {
+  update();
+}
+
+QImage VtkView::renderImage() {
+  return grabFramebuffer();
+}
+
+bool VtkView::saveScreenshot(const QString& path) {
+  const QImage image = renderImage();
+  return !image.isNull() && image.save(path);
+}
+
+void VtkView::initializeGL() {
+  if (contextDestroyed_) QObject::disconnect(contextDestroyed_);
+  // A reparented widget gets a new context; VTK's objects of the old one must go first.
+  contextDestroyed_ =
+      connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, [this] { releaseGraphics(); });
+  renderWindow_->SetReadyForRendering(true);
+  renderWindow_->InitializeFromCurrentContext();
+  renderWindow_->SetReadyForRendering(false);
+  renderWindow_->SetMapped(true);
+  glReady_ = true;
+  resizeGL(width(), height());
+}
+
+void VtkView::resizeGL(int w, int h) {
+  const double dpr = devicePixelRatioF();
+  const int dw = std::max(1, static_cast<int>(std::lround(w * dpr)));
+  const int dh = std::max(1, static_cast<int>(std::lround(h * dpr)));
+  renderWindow_->SetSize(dw, dh);
+  interactor_->UpdateSize(dw, dh);
+}
+
+void VtkView::paintGL() {
+  if (!glReady_) return;
+  renderWindow_->SetReadyForRendering(true);
+  renderWindow_->Render();
+  renderWindow_->SetReadyForRendering(false);
+  blitToWidget();
+}
+
+void VtkView::blitToWidget() {
+  vtkOpenGLFramebufferObject* display = renderWindow_->GetDisplayFramebuffer();
+  if (!display) return;
+  const int* size = renderWindow_->GetSize();
+  vtkOpenGLState* state = renderWindow_->GetState();
+  state->PushFramebufferBindings();
+  // The widget's FBO, never 0: QOpenGLWidget composites from its own framebuffer.
+  state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
+  state->vtkglDrawBuffer(GL_COLOR_ATTACHMENT0);
+  display->Bind(GL_READ_FRAMEBUFFER);
+  display->ActivateReadBuffer(0);
+  state->vtkglViewport(0, 0, size[0], size[1]);
+  state->vtkglScissor(0, 0, size[0], size[1]);
+  state->vtkglBlitFramebuffer(0, 0, size[0], size[1], 0, 0, size[0], size[1], GL_COLOR_BUFFER_BIT,
+                              GL_NEAREST);
+  // Trap 2: VTK leaves alpha < 1 where nothing was drawn; grabFramebuffer() and the
+  // compositor would show those pixels as black or translucent.
+  state->vtkglColorMask(false, false, false, true);
+  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  state->vtkglColorMask(true, true, true, true);
+  state->PopFramebufferBindings();
+}
+
+void VtkView::releaseGraphics() {
+  if (!glReady_ || !context()) return;
+  makeCurrent();
+  renderWindow_->Finalize();
+  doneCurrent();
+  glReady_ = false;
+}
+
+void VtkView::onGlEvent(vtkObject* caller, unsigned long eventId, void* callData) {
+  Q_UNUSED(caller);
+  switch (eventId) {
+    case vtkCommand::WindowMakeCurrentEvent:
+      onMakeCurrent();
+      break;
+    case vtkCommand::WindowIsCurrentEvent:
+      *static_cast<bool*>(callData) =
+          context() != nullptr && QOpenGLContext::currentContext() == context();
+      break;
+    case vtkCommand::WindowSupportsOpenGLEvent:
+      *static_cast<int*>(callData) = 1;
+      break;
+    case vtkCommand::WindowIsDirectEvent:
+      *static_cast<int*>(callData) = 1;
+      break;
+    case vtkCommand::RenderEvent:
+      update();
+      break;
+    default:
+      break;
+  }
+}
+
+void VtkView::onMakeCurrent() {
+  // Trap 1: inside paintGL the context is already current with the widget FBO bound, and VTK's
+  // state cache knows about its own bindings; QOpenGLWidget::makeCurrent() would rebind the
+  // widget FBO behind VTK's back. Only switch when another context (or none) is current.
+  QOpenGLContext* ctx = context();
+  if (ctx && QOpenGLContext::currentContext() != ctx) makeCurrent();
+}
+
+void VtkView::setEventPosition(const QPointF& pos, Qt::KeyboardModifiers modifiers) {
+  const double dpr = devicePixelRatioF();
+  interactor_->SetEventInformationFlipY(
+      static_cast<int>(std::lround(pos.x() * dpr)), static_cast<int>(std::lround(pos.y() * dpr)),
+      (modifiers & Qt::ControlModifier) ? 1 : 0, (modifiers & Qt::ShiftModifier) ? 1 : 0);
+  interactor_->SetAltKey((modifiers & Qt::AltModifier) ? 1 : 0);
+}
+
+void VtkView::mousePressEvent(QMouseEvent* event) {
+  setEventPosition(event->position(), event->modifiers());
+  interactor_->SetRepeatCount(event->type() == QEvent::MouseButtonDblClick ? 1 : 0);
+  switch (event->button()) {
+    case Qt::LeftButton:
+      interactor_->LeftButtonPressEvent();
+      break;
+    case Qt::MiddleButton:
+      interactor_->MiddleButtonPressEvent();
+      break;
+    case Qt::RightButton:
+      interactor_->RightButtonPressEvent();
+      break;
+    default:
+      return QOpenGLWidget::mousePressEvent(event);
+  }
+  event->accept();
+}
+
+void VtkView::mouseReleaseEvent(QMouseEvent* event) {
+  setEventPosition(event->position(), event->modifiers());
+  switch (event->button()) {
+    case Qt::LeftButton:
+      interactor_->LeftButtonReleaseEvent();
+      break;
+    case Qt::MiddleButton:
+      interactor_->MiddleButtonReleaseEvent();
+      break;
+    case Qt::RightButton:
+      interactor_->RightButtonReleaseEvent();
+      break;
+    default:
+      return QOpenGLWidget::mouseReleaseEvent(event);
+  }
+  event->accept();
+}
+
+void VtkView::mouseMoveEvent(QMouseEvent* event) {
+  setEventPosition(event->position(), event->modifiers());
+  interactor_->MouseMoveEvent();
+  event->accept();
+}
+
+void VtkView::wheelEvent(QWheelEvent* event) {
+  setEventPosition(event->position(), event->modifiers());
+  const int delta = event->angleDelta().y();
+  if (delta > 0) interactor_->MouseWheelForwardEvent();
+  if (delta < 0) interactor_->MouseWheelBackwardEvent();
+  event->accept();
+}
+
+}  // namespace ddfcam::gui
