@@ -9,6 +9,7 @@
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <cassert>
 #include <string>
 
 #include "adaptive_face.h"
@@ -104,6 +105,9 @@ std::vector<SupportVertex> numberVertices(const DisplacementField& ddf, std::int
   tbb::parallel_sort(border.begin(), border.end());
   std::vector<SupportVertex> onEdges;
   for (std::size_t b = 0; b < border.size(); ++b) {
+    assert((b == 0 || border[b].key != border[b - 1].key ||
+            results[border[b].face].vertices[border[b].slot].position == vertices.back()) &&
+           "both faces of a support edge compute its points bitwise identically");
     if (b == 0 || border[b].key != border[b - 1].key) {
       const auto& first = results[border[b].face].vertices[border[b].slot];
       vertices.push_back(first.position);
@@ -152,7 +156,7 @@ struct TVertexRemoval {
     const auto last =
         std::lower_bound(first, onEdges->end(), SupportVertex{edge, std::max(ta, tb), 0});
     const std::size_t begin = out.size();
-    (void)first; (void)last;
+    for (auto it = first; it != last; ++it) out.push_back(it->vertex);
     if (ta > tb) std::reverse(out.begin() + begin, out.end());
   }
 
@@ -182,14 +186,12 @@ struct TVertexRemoval {
       r.triangles.push_back({r.vertexIndex[t[0]], r.vertexIndex[t[1]], r.vertexIndex[t[2]]});
   }
 
-  // Local support side shared by two border vertices of a face.
-  int supportSide(const FaceResult& r, int u, int v) const {
-    const std::int64_t NS = ddf->raster().steps() * ctx->scale;
+  // Local support side (see detail::borderSide) shared by two border vertices of a face.
+  static int supportSide(const FaceResult& r, int u, int v) {
     const auto& a = r.vertices[u];
     const auto& b = r.vertices[v];
     if (a.K == 0 && b.K == 0) return 0;
     if (a.I == 0 && b.I == 0) return 1;
-    (void)NS;
     return 2;
   }
 

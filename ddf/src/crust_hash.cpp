@@ -107,6 +107,7 @@ void CrustHash::insertFace(const DisplacementField& ddf, int face) {
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   for (CellKey k : keys) cells_[k].push_back(face);
+  keys.shrink_to_fit();  // the sub-volume pass collected many duplicates
   faceCells_[face] = std::move(keys);
 }
 
@@ -126,6 +127,7 @@ void CrustHash::rebuild(const DisplacementField& ddf) {
   faceCells_.assign(ddf.faceCount(), {});
   cells_.reserve(static_cast<std::size_t>(ddf.faceCount()) * 4);
   for (int f = 0; f < ddf.faceCount(); ++f) insertFace(ddf, f);
+  for (auto& [k, list] : cells_) list.shrink_to_fit();
 }
 
 void CrustHash::updateFaces(const DisplacementField& ddf, std::span<const int> faces) {

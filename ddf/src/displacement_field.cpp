@@ -118,15 +118,14 @@ void DisplacementField::synchronizeShared(SharedPolicy policy, std::span<const i
 }
 
 std::size_t DisplacementField::memoryBytes() const {
-  // OpenMesh array kernel: point per vertex, one handle per vertex and face, per halfedge
-  // (vertex, face, next, prev) handles.
+  // OpenMesh array kernel: per vertex a point and a halfedge handle, per face a handle, per
+  // halfedge (vertex, face, next, prev) handles.
   const std::size_t meshBytes = support_.n_vertices() * (sizeof(OpenMesh::Vec3d) + 4) +
                                 support_.n_faces() * 4 + support_.n_halfedges() * 16;
-  const std::size_t topologyBytes =
-      faceVertices_.size() * (3 * 4 * 3) + support_.n_edges() * (2 * 4 * 2) +
-      support_.n_vertices() * sizeof(std::vector<int>) + support_.n_faces() * 3 * 4;
-  return meshBytes + topologyBytes + positions_.size() * sizeof(Vec3) +
-         vectors_.size() * sizeof(Vec3) + heights_.size() * sizeof(float);
+  return meshBytes + topology_.memoryBytes() +
+         faceVertices_.capacity() * sizeof(faceVertices_[0]) +
+         positions_.capacity() * sizeof(Vec3) + vectors_.capacity() * sizeof(Vec3) +
+         heights_.capacity() * sizeof(float);
 }
 
 }  // namespace ddfcam::ddf

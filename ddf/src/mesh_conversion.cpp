@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 // ddfcam: mesh -> DDF baseline conversion (weld, manifold support, pseudo-normals, lengths).
+#include <ddfcam/ddf/crust_hash.h>
+#include <ddfcam/ddf/depth_buffer.h>
 #include <ddfcam/ddf/mesh_conversion.h>
 #include <ddfcam/error.h>
 #include <ddfcam/log.h>
@@ -145,6 +147,20 @@ SupportMesh buildSupport(const TriangleMesh& mesh, const ConversionParams& param
   return makeSupportMesh(points, triangles);
 }
 
+
+// Heights from the input mesh along the stubbles (the depth buffer's fill mode): the support is
+// the mesh, so heights come out ~0, but the input's dropped triangles and any later change of
+// support are honoured the same way. Stubbles that miss keep h = 0, i.e. the support itself.
+void fillFromInput(const TriangleMesh& mesh, const ConversionParams& params,
+                   ConversionResult& result) {
+  const CrustHash hash(result.ddf);
+  FillParams fill;
+  if (params.progress) fill.progress = [&](double x) { return params.progress(0.9 + 0.1 * x); };
+  const FillReport report = fillFromMesh(result.ddf, hash, mesh, fill);
+  result.filledPoints = report.filled;
+  result.unfilledPoints = report.missing;
+}
+
 }  // namespace
 
 ConversionResult convertMeshToDdf(const TriangleMesh& mesh, const ConversionParams& params) {
@@ -164,8 +180,9 @@ ConversionResult convertMeshToDdf(const TriangleMesh& mesh, const ConversionPara
       DisplacementField(std::move(support), std::move(normals.normals), params.resolution, 0.0f);
   reportProgress(params.progress, 0.2);
   VectorLengthParams lengths = params.lengths;
-  if (params.progress) lengths.progress = [&](double x) { return params.progress(0.2 + 0.8 * x); };
+  if (params.progress) lengths.progress = [&](double x) { return params.progress(0.2 + 0.7 * x); };
   result.lengths = chooseVectorLengths(result.ddf, lengths);
+  fillFromInput(mesh, params, result);
   reportProgress(params.progress, 1.0);
   return result;
 }

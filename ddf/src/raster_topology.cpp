@@ -150,4 +150,15 @@ void RasterTopology::neighbors(PointId p, std::vector<PointId>& out) const {
   out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
+std::size_t RasterTopology::memoryBytes() const {
+  constexpr std::size_t kMallocOverhead = 16;
+  std::size_t bytes = faceVertices_.capacity() * sizeof(faceVertices_[0]) +
+                      faceEdges_.capacity() * sizeof(faceEdges_[0]) +
+                      edgeFaces_.capacity() * sizeof(edgeFaces_[0]) +
+                      edgeVertices_.capacity() * sizeof(edgeVertices_[0]) +
+                      vertexFaces_.capacity() * sizeof(vertexFaces_[0]);
+  for (const auto& faces : vertexFaces_) bytes += faces.capacity() * sizeof(int) + kMallocOverhead;
+  return bytes;
+}
+
 }  // namespace ddfcam::ddf

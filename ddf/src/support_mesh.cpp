@@ -2,6 +2,8 @@
 #include <ddfcam/ddf/support_mesh.h>
 #include <ddfcam/error.h>
 
+#include <OpenMesh/Core/System/omstream.hh>
+
 #include <string>
 
 namespace ddfcam::ddf {
@@ -22,7 +24,11 @@ SupportMesh makeSupportMesh(const std::vector<Vec3>& points,
                            std::to_string(v) + " of " + std::to_string(vertexCount));
       }
     }
+    // OpenMesh reports a rejected face on its error stream; ddfcam reports it by exception.
+    const bool wasEnabled = omerr().is_enabled();
+    omerr().disable();
     const auto fh = mesh.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
+    if (wasEnabled) omerr().enable();
     if (!fh.is_valid()) {
       throw InvalidInput("support triangle " + std::to_string(f) + " (vertices " +
                          std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+// Tests of the adaptive triangulation: error bound, crack-freeness, manifoldness, counts.
 #include <ddfcam/ddf/adaptive_triangulation.h>
 #include <ddfcam/error.h>
 

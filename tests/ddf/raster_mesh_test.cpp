@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+// Tests of the raster surface mesh and the support mesh against analytic surfaces.
 #include <ddfcam/ddf/raster_mesh.h>
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+// Tests of the displacement stubbles on a planar field and by brute-force selection.
 #include <ddfcam/ddf/stubble_lines.h>
 
 #include <gtest/gtest.h>

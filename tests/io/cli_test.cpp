@@ -126,15 +126,15 @@ TEST(Cli, ConvertThenInfoJsonReportsTheGridNumbers) {
     const CliRun info = cli(dir, {"info", ddfPath, "--json"});
     ASSERT_EQ(info.exitCode, 0) << info.err;
     // Oracle: a 6 x 6 cell grid has 49 vertices and 72 triangles; at m = 5 its raster is the
-    // regular lattice of (6 (m-1) + 1)^2 points; conversion leaves every height at 0.
+    // regular lattice of (6 (m-1) + 1)^2 points; heights are filled from the mesh itself, ~0.
     EXPECT_EQ(jsonNumber(info.out, "vertices"), 49);
     EXPECT_EQ(jsonNumber(info.out, "faces"), 72);
     EXPECT_EQ(jsonNumber(info.out, "resolution"), 5);
     EXPECT_EQ(jsonNumber(info.out, "pointsPerFace"), 15);
     EXPECT_EQ(jsonNumber(info.out, "storedHeights"), 72 * 15);
     EXPECT_EQ(jsonNumber(info.out, "rasterPoints"), 25 * 25);
-    EXPECT_EQ(jsonNumber(info.out, "heightMin"), 0.0);
-    EXPECT_EQ(jsonNumber(info.out, "heightMax"), 0.0);
+    EXPECT_NEAR(jsonNumber(info.out, "heightMin"), 0.0, 1e-6);
+    EXPECT_NEAR(jsonNumber(info.out, "heightMax"), 0.0, 1e-6);
     EXPECT_EQ(jsonNumber(info.out, "fileBytes"), std::filesystem::file_size(ddfPath));
     const auto box = jsonBox(info.out, "surfaceBounds");
     EXPECT_NEAR((box[0] - Eigen::Vector3d(0, 0, 0)).norm(), 0.0, 1e-9);

@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: MIT
-// ddfcam: adaptive triangulation of a DDF-represented surface (dissertation ch. 7, after Clay et
-// al.).
+// ddfcam: adaptive triangulation of DDF-represented surfaces (ch. 7, after Clay et al.).
 #pragma once
 
 #include <ddfcam/ddf/displacement_field.h>
@@ -27,27 +26,40 @@ struct AdaptiveTriangulationParams {
 
 /// @brief An adaptive triangulation and its statistics.
 struct AdaptiveTriangulation {
-  /// Vertices: raster points welded by PointId (shared points bitwise identical across faces)
-  /// plus one centroid per re-triangulated leaf, mm, part frame; triangles oriented like their
-  /// support faces, grouped by face in face order.
+  /// Vertices (mm, part frame): DDF points and straight midpoints of the subdivision, points
+  /// on support edges and vertices welded across faces (bitwise identical from both sides),
+  /// plus one centroid per leaf re-triangulated around it. Triangles are oriented like their
+  /// support faces and grouped by face in face order.
   TriangleMesh mesh;
   /// #T support face of each triangle.
   std::vector<int> triangleFace;
-  /// Triangles accepted by the subdivision before T-vertex removal.
+  /// Triangles of the subdivision before T-vertex removal.
   std::size_t leafTriangles = 0;
-  /// Largest distance measured at an accepted raster point between q and its flat
-  /// approximation, mm (<= epsMm).
+  /// Largest distance measured between an approximating triangle and the DDF surface at an
+  /// accepted sample, mm (<= epsMm).
   double maxErrorMm = 0.0;
 };
 
-/// @brief Adaptive triangulation of the surface represented by @p ddf (dissertation ch. 7):
-/// per support face, recursive 4-split of the raster triangle until the flat triangle over a
-/// sub-triangle approximates q at every raster point inside within eps (E_t); an edge split
-/// takes the straight midpoint when the edge approximates within eps (E_e), else the DDF point.
-/// Works for any m: midpoints are rounded to raster points along the edge's lattice line
-/// (canonically on support edges, so both faces of an edge split alike); edges without an
-/// inner raster point are not split and a triangle without splittable edges is fanned around
-/// an inner raster point. Faces are processed in parallel.
+/// @brief Adaptive triangulation of the surface represented by @p ddf (dissertation ch. 7,
+/// after Clay et al.). Per support face, the raster triangle is split recursively into four at
+/// its edge midpoints until the flat triangle over a sub-triangle approximates the DDF within
+/// eps (E_t): at every raster point inside, and along its edges (E_e). A split edge takes the
+/// straight midpoint s_ij when E_e holds (and all its sub-edges inherit E_e), else the DDF point
+/// q_ij; so a long edge facing several short ones never opens a crack.
+///
+/// Any m works, with triangles of one shape at all levels: midpoints are exact (on a lattice
+/// 2^p times finer than the raster) and the DDF surface between raster points is the raster
+/// mesh (fig. 7.1a), so E_e measures an edge at its crossings with the raster lattice (at the
+/// raster points when it runs along a lattice line). For m - 1 a power of two every midpoint is
+/// a raster point and this is exactly the algorithm of ch. 7; otherwise a sub-triangle smaller
+/// than two raster steps that still fails takes raster points as vertices (those on failing
+/// edges, then the worst inner one until all are within eps). Above the raster's own error the
+/// triangle count does not depend on m (fig. 7.3). Shared points are computed from canonical
+/// copies in canonical order, so faces run in parallel and agree bitwise.
+///
+/// Guarantee: the DDF point q of every raster point lies within epsMm of the mesh (of the
+/// triangles of its own face). The count falls as eps grows on generic surfaces, but is not
+/// monotone in general (straight midpoints pass their error on to their sub-triangles).
 /// @throws InvalidInput if params.epsMm is not positive; Cancelled if params.progress asks.
 TriangleMesh triangulateAdaptive(const DisplacementField& ddf,
                                  const AdaptiveTriangulationParams& params = {});

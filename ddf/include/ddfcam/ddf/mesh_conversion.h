@@ -30,7 +30,7 @@ struct ConversionParams {
 
 /// @brief The converted DDF and what the conversion had to give up.
 struct ConversionResult {
-  DisplacementField ddf;                ///< support = the welded input mesh, heights 0
+  DisplacementField ddf;                ///< support = the welded input mesh, heights by fill
   int droppedFaces = 0;                 ///< triangles OpenMesh rejected (non-manifold, flipped)
   int degenerateFaces = 0;              ///< triangles dropped for a repeated vertex or zero area
   int weldedVertices = 0;               ///< input vertices merged into another one
@@ -38,6 +38,8 @@ struct ConversionResult {
   std::vector<int> repairedVertices;    ///< DDF vertices whose direction left the pseudo-normal
   std::vector<int> infeasibleVertices;  ///< DDF vertices with no front-facing direction
   VectorLengthReport lengths;           ///< report of the vector length choice
+  std::size_t filledPoints = 0;         ///< stored heights set from the input mesh by fill
+  std::size_t unfilledPoints = 0;       ///< stored heights whose stubble missed it (kept at 0)
 };
 
 /// @brief Converts @p mesh into a DDF whose support is the mesh itself (the baseline of ch. 6).
@@ -45,10 +47,10 @@ struct ConversionResult {
 /// Steps: weld vertices; drop triangles with a repeated vertex or zero area; build the support
 /// mesh, dropping (with a warning through ddfcam::log) the triangles OpenMesh rejects as
 /// non-manifold or inconsistently oriented, and unused vertices; directions = angle-weighted
-/// pseudo-normals repaired for constraint 1; lengths by chooseVectorLengths. Every height is
-/// 0: the raster points lie on the support, which is the mesh itself, so the DDF represents the
-/// mesh exactly at its raster points. Setting heights from another surface along the stubbles
-/// is a separate fill operation.
+/// pseudo-normals repaired for constraint 1; lengths by chooseVectorLengths; heights by the
+/// depth buffer's fill mode from the input mesh (the nearest intersection of every stubble with
+/// it in [-1, 1]). With the mesh as support the heights come out ~0 and the represented surface
+/// lies on the input up to float rounding (one-sided Hausdorff distance checked in the tests).
 /// @throws InvalidInput for a bad resolution, an index out of range, or when no triangle
 /// survives. @throws Cancelled through params.progress.
 ConversionResult convertMeshToDdf(const TriangleMesh& mesh, const ConversionParams& params = {});

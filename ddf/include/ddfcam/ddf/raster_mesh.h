@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: MIT
-// ddfcam: the non-adaptive surface mesh of a DDF and its support mesh (dissertation ch. 7,
-// fig. 7.1a).
+// ddfcam: the non-adaptive surface mesh of a DDF (fig. 7.1a) and its support mesh.
 #pragma once
 
 #include <ddfcam/ddf/displacement_field.h>

@@ -64,6 +64,8 @@ class RasterTopology {
   RasterCoord coord(const PointCopy& c) const;
   /// @brief Mesh edge e with the faces on its two sides (-1 on a boundary).
   const std::array<int, 2>& edgeFaces(int e) const { return edgeFaces_[e]; }
+  /// @brief Bytes held by the numbering tables (container storage and allocation overhead).
+  std::size_t memoryBytes() const;
   /// @brief Faces incident to vertex v.
   const std::vector<int>& vertexFaces(int v) const { return vertexFaces_[v]; }
 
