@@ -113,7 +113,7 @@ int rowIntervals(const PairForms& forms, int k, int rowLength, KernelMode mode, 
                  std::array<std::pair<int, int>, 5>& out) {
   const RowPoly r = rowPoly(forms, k);
   const double lo = 0.0, hi = rowLength - 1;
-  double cuts[12];
+  double cuts[16];  // at most 9 roots; 16 keeps std::sort's small-array path in bounds
   int count = 0;
   quadraticRoots(0.0, r.d1, r.d0, lo, hi, cuts, count);
   quadraticRoots(0.0, r.n1 - r.d1, r.n0 - r.d0, lo, hi, cuts, count);
@@ -158,8 +158,14 @@ int rowIntervals(const PairForms& forms, int k, int rowLength, KernelMode mode, 
   return merged;
 }
 
-void cutRow(float* heights, int first, int last, const RowForms& r, float tol,
-            KernelCounts& counts) {
+namespace {
+
+// The cut kernel; counting hits (for growing row ranges) is optional because it costs a vector
+// compare and add per step on the long rows that do not need it.
+template <bool kCountHits>
+[[gnu::always_inline]] inline void cutRowImpl(float* heights, int first, int last,
+                                              const RowForms& r, float tol,
+                                              KernelCounts& counts) {
   unsigned lowered = 0, clamped = 0, hits = 0;  // 32-bit lanes keep the loop vectorisable
   for (int i = first; i <= last; ++i) {
     const float x = static_cast<float>(i);
@@ -175,11 +181,40 @@ void cutRow(float* heights, int first, int last, const RowForms& r, float tol,
     heights[i] = lower ? hc : old;
     lowered += lower;
     clamped += lower & (h < -1.0f);
-    hits += hit & (h <= 1.0f);
+    if constexpr (kCountHits) hits += hit & (h <= 1.0f);
   }
   counts.lowered += lowered;
   counts.clamped += clamped;
   counts.hits += hits;
+}
+
+// The build stays portable (x86-64 baseline); on x86 these hot loops are also compiled for
+// AVX2/FMA and picked at load time when the CPU has them (GCC function multiversioning).
+#if defined(__x86_64__) && !defined(DDFCAM_NATIVE_BUILD)
+#define DDFCAM_KERNEL_CLONES [[gnu::target_clones("arch=x86-64-v3", "default")]]
+#else
+#define DDFCAM_KERNEL_CLONES
+#endif
+
+DDFCAM_KERNEL_CLONES void cutRowCounting(float* heights, int first, int last, const RowForms& r,
+                                         float tol, KernelCounts& counts) {
+  cutRowImpl<true>(heights, first, last, r, tol, counts);
+}
+
+DDFCAM_KERNEL_CLONES void cutRowPlain(float* heights, int first, int last, const RowForms& r,
+                                      float tol, KernelCounts& counts) {
+  cutRowImpl<false>(heights, first, last, r, tol, counts);
+}
+
+}  // namespace
+
+void cutRow(float* heights, int first, int last, const RowForms& r, float tol,
+            KernelCounts& counts, bool countHits) {
+  if (countHits) {
+    cutRowCounting(heights, first, last, r, tol, counts);
+  } else {
+    cutRowPlain(heights, first, last, r, tol, counts);
+  }
 }
 
 void fillRow(float* heights, int first, int last, const RowForms& r, float tol,

@@ -66,9 +66,10 @@ struct KernelCounts {
   std::size_t hits = 0;     ///< stubbles that meet the tool triangle at a height that matters
 };
 
-/// @brief Cut mode kernel on heights[first..last] of one row.
+/// @brief Cut mode kernel on heights[first..last] of one row; counts.hits is only maintained
+/// when @p countHits is set.
 void cutRow(float* heights, int first, int last, const RowForms& row, float lambdaTolerance,
-            KernelCounts& counts);
+            KernelCounts& counts, bool countHits = true);
 /// @brief Fill mode kernel on heights[first..last] of one row; heights hold NaN where no hit
 /// was found yet.
 void fillRow(float* heights, int first, int last, const RowForms& row, float lambdaTolerance,

@@ -83,9 +83,9 @@ bool hitAt(const RowForms& r, int i, float tol, KernelMode mode) {
 }
 
 void runKernel(float* rowHeights, int first, int last, const RowForms& row, KernelMode mode,
-               float tol, KernelCounts& counts) {
+               float tol, KernelCounts& counts, bool countHits = true) {
   if (mode == KernelMode::Cut) {
-    cutRow(rowHeights, first, last, row, tol, counts);
+    cutRow(rowHeights, first, last, row, tol, counts, countHits);
   } else {
     fillRow(rowHeights, first, last, row, tol, counts);
   }
@@ -105,7 +105,7 @@ bool exactRow(float* heights, const Raster& raster, const PairForms& forms, int 
   const RowForms row = rowForms(forms, k);
   for (int r = 0; r < count; ++r)
     runKernel(heights + raster.rowOffset(k), ranges[r].first, ranges[r].second, row, mode,
-              params.lambdaTolerance, counts);
+              params.lambdaTolerance, counts, /*countHits=*/false);
   return count > 0;
 }
 

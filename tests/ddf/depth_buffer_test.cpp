@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <numeric>
 #include <random>
 
 #include "../support/test_meshes.h"
@@ -189,6 +190,30 @@ TEST(DepthBuffer, LocalizationIsSupersetOfBruteForce) {
   RecordProperty("candidate_over_truth", std::to_string(double(candidates) / truth));
   std::printf("localization: %zu candidates for %zu true pairs (%.2fx)\n", candidates, truth,
               double(candidates) / truth);
+}
+
+TEST(CrustHash, FollowsVectorChanges) {
+  // Lengthen the vectors: a triangle just outside the old crust but inside the new one must be
+  // found after updateFaces (and was not a candidate before).
+  const auto mesh = test::gridMesh(6, 6, 1.0, 1.0);
+  DisplacementField ddf(mesh, test::constantVectors(mesh, {0, 0, 0.2}), 5);
+  CrustHash hash(ddf);
+  const Vec3 a(2.2, 2.2, 1.5), b(2.6, 2.2, 1.5), c(2.2, 2.6, 1.5);
+  std::vector<int> before, after;
+  hash.queryTriangle(a, b, c, before);
+  ddf.setVectors(test::constantVectors(mesh, {0, 0, 2.0}));
+  std::vector<int> all(ddf.faceCount());
+  std::iota(all.begin(), all.end(), 0);
+  hash.updateFaces(ddf, all);
+  hash.queryTriangle(a, b, c, after);
+  EXPECT_TRUE(before.empty());
+  ASSERT_FALSE(after.empty());
+  // The faces under the triangle (x, y in [2, 3]) are among the candidates.
+  for (int f = 0; f < ddf.faceCount(); ++f) {
+    const Vec3 centre = ddf.basePoint(f, Vec3(1, 1, 1) / 3.0);
+    if (centre.x() > 2 && centre.x() < 3 && centre.y() > 2 && centre.y() < 3)
+      EXPECT_TRUE(std::binary_search(after.begin(), after.end(), f)) << "face " << f;
+  }
 }
 
 TEST(DepthBuffer, FillFromCubeAndSphereOnSharedSupport) {
