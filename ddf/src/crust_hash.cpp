@@ -20,7 +20,8 @@ void forEachSubTriangle(int s, Fn&& fn) {
   for (int a = 0; a < s; ++a)
     for (int b = 0; a + b < s; ++b) {
       fn(gridBary(a, b, s), gridBary(a + 1, b, s), gridBary(a, b + 1, s));
-      if (a + b + 2 <= s) fn(gridBary(a + 1, b, s), gridBary(a + 1, b + 1, s), gridBary(a, b + 1, s));
+      if (a + b + 2 <= s)
+        fn(gridBary(a + 1, b, s), gridBary(a + 1, b + 1, s), gridBary(a, b + 1, s));
     }
 }
 

@@ -69,8 +69,8 @@ std::optional<PairForms> makePairForms(const FaceCorners& s, const Vec3& q1, con
                                        const Vec3& q3, int n, KernelMode mode) {
   const Vec3 normal = (q2 - q1).cross(q3 - q1);
   const double nn = normal.squaredNorm();
-  const double size2 = std::max({(q2 - q1).squaredNorm(), (q3 - q2).squaredNorm(),
-                                 (q1 - q3).squaredNorm()});
+  const double size2 =
+      std::max({(q2 - q1).squaredNorm(), (q3 - q2).squaredNorm(), (q1 - q3).squaredNorm()});
   if (!(nn > 1e-24 * size2 * size2) || !(size2 > 0.0)) return std::nullopt;
   std::array<double, 3> b{};
   for (int i = 0; i < 3; ++i) b[i] = s.v[i].dot(normal);
@@ -164,8 +164,7 @@ namespace {
 // compare and add per step on the long rows that do not need it.
 template <bool kCountHits>
 [[gnu::always_inline]] inline void cutRowImpl(float* heights, int first, int last,
-                                              const RowForms& r, float tol,
-                                              KernelCounts& counts) {
+                                              const RowForms& r, float tol, KernelCounts& counts) {
   unsigned lowered = 0, clamped = 0, hits = 0;  // 32-bit lanes keep the loop vectorisable
   for (int i = first; i <= last; ++i) {
     const float x = static_cast<float>(i);
@@ -208,8 +207,8 @@ DDFCAM_KERNEL_CLONES void cutRowPlain(float* heights, int first, int last, const
 
 }  // namespace
 
-void cutRow(float* heights, int first, int last, const RowForms& r, float tol,
-            KernelCounts& counts, bool countHits) {
+void cutRow(float* heights, int first, int last, const RowForms& r, float tol, KernelCounts& counts,
+            bool countHits) {
   if (countHits) {
     cutRowCounting(heights, first, last, r, tol, counts);
   } else {
@@ -229,8 +228,8 @@ void fillRow(float* heights, int first, int last, const RowForms& r, float tol,
     const float l3 = r.ab[2] + x * r.as[2] + h * (r.bb[2] + x * r.bs[2]);
     const float old = heights[i];
     // NaN marks "no hit yet"; !(|old| <= |h|) is true for NaN and for a nearer hit.
-    const bool hit = (d != 0.0f) & (l1 >= -tol) & (l2 >= -tol) & (l3 >= -tol) &
-                     (std::abs(h) <= 1.0f);
+    const bool hit =
+        (d != 0.0f) & (l1 >= -tol) & (l2 >= -tol) & (l3 >= -tol) & (std::abs(h) <= 1.0f);
     const bool take = hit & !(std::abs(old) <= std::abs(h));
     heights[i] = take ? h : old;
     hits += hit;

@@ -185,8 +185,9 @@ CutStats cutByTriangles(DisplacementField& ddf, const CrustHash& hash,
     KernelCounts& counts = totals.local();
     for (std::size_t p = groups.groupStart[gi]; p < groups.groupStart[gi + 1]; ++p) {
       const std::size_t t = static_cast<std::size_t>(groups.pairs[p].second);
-      processCandidate(heights, ddf.raster(), c, {corners[3 * t], corners[3 * t + 1], corners[3 * t + 2]},
-                       KernelMode::Cut, params, counts);
+      processCandidate(heights, ddf.raster(), c,
+                       {corners[3 * t], corners[3 * t + 1], corners[3 * t + 2]}, KernelMode::Cut,
+                       params, counts);
     }
   });
   CutStats stats;

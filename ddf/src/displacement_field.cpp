@@ -12,9 +12,9 @@ DisplacementField::DisplacementField(SupportMesh support, std::vector<Vec3> vect
                                      float initialHeight)
     : support_(std::move(support)) {
   if (vectors.size() != support_.n_vertices()) {
-    throw InvalidInput("DDF needs one displacement vector per support vertex: " +
-                       std::to_string(vectors.size()) + " vectors for " +
-                       std::to_string(support_.n_vertices()) + " vertices");
+    throw InvalidInput(
+        "DDF needs one displacement vector per support vertex: " + std::to_string(vectors.size()) +
+        " vectors for " + std::to_string(support_.n_vertices()) + " vertices");
   }
   topology_ = RasterTopology(support_, m);
   positions_.reserve(support_.n_vertices());
@@ -122,8 +122,7 @@ std::size_t DisplacementField::memoryBytes() const {
   // halfedge (vertex, face, next, prev) handles.
   const std::size_t meshBytes = support_.n_vertices() * (sizeof(OpenMesh::Vec3d) + 4) +
                                 support_.n_faces() * 4 + support_.n_halfedges() * 16;
-  return meshBytes + topology_.memoryBytes() +
-         faceVertices_.capacity() * sizeof(faceVertices_[0]) +
+  return meshBytes + topology_.memoryBytes() + faceVertices_.capacity() * sizeof(faceVertices_[0]) +
          positions_.capacity() * sizeof(Vec3) + vectors_.capacity() * sizeof(Vec3) +
          heights_.capacity() * sizeof(float);
 }

@@ -147,7 +147,6 @@ SupportMesh buildSupport(const TriangleMesh& mesh, const ConversionParams& param
   return makeSupportMesh(points, triangles);
 }
 
-
 // Heights from the input mesh along the stubbles (the depth buffer's fill mode): the support is
 // the mesh, so heights come out ~0, but the input's dropped triangles and any later change of
 // support are honoured the same way. Stubbles that miss keep h = 0, i.e. the support itself.

@@ -119,7 +119,8 @@ void polygonRow(float* heights, const Raster& raster, const PairForms& forms, co
     const auto& a = seed.corner[e];
     const auto& b = seed.corner[(e + 1) % 3];
     if ((a.y() - kk) * (b.y() - kk) > 0.0) continue;
-    const double x = a.y() == b.y() ? a.x() : a.x() + (kk - a.y()) / (b.y() - a.y()) * (b.x() - a.x());
+    const double x =
+        a.y() == b.y() ? a.x() : a.x() + (kk - a.y()) / (b.y() - a.y()) * (b.x() - a.x());
     xMin = std::min({xMin, x, a.y() == b.y() ? b.x() : x});
     xMax = std::max({xMax, x, a.y() == b.y() ? b.x() : x});
   }
@@ -140,7 +141,8 @@ void polygonRow(float* heights, const Raster& raster, const PairForms& forms, co
 constexpr int kShortRow = 96;
 
 // One row of the seeded range: bounded by the projected triangle when its corners are near the
-// face, else whole when short or bounded by the exact roots when long. Returns whether the row meets the triangle.
+// face, else whole when short or bounded by the exact roots when long. Returns whether the row
+// meets the triangle.
 bool seededRow(float* heights, const Raster& raster, const PairForms& forms, const Seed& seed,
                int k, KernelMode mode, const DepthBufferParams& params, KernelCounts& counts) {
   const int length = raster.rowLength(k);

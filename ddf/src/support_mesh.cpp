@@ -32,8 +32,7 @@ SupportMesh makeSupportMesh(const std::vector<Vec3>& points,
     if (!fh.is_valid()) {
       throw InvalidInput("support triangle " + std::to_string(f) + " (vertices " +
                          std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +
-                         std::to_string(t[2]) +
-                         ") makes the mesh non-manifold or is degenerate");
+                         std::to_string(t[2]) + ") makes the mesh non-manifold or is degenerate");
     }
   }
   return mesh;

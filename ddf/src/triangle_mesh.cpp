@@ -15,8 +15,7 @@ std::array<Eigen::Vector3d, 2> TriangleMesh::bounds() const {
 
 double TriangleMesh::signedVolume() const {
   double sixV = 0.0;
-  for (const auto& t : triangles)
-    sixV += vertices[t[0]].dot(vertices[t[1]].cross(vertices[t[2]]));
+  for (const auto& t : triangles) sixV += vertices[t[0]].dot(vertices[t[1]].cross(vertices[t[2]]));
   return sixV / 6.0;
 }
 

@@ -18,7 +18,8 @@ namespace {
 TriangleMesh halfSpaceAbove(const Vec3& point, const Vec3& up, double size = 100.0) {
   const TriangleMesh box = test::boxMesh({-size, -size, 0.0}, {size, size, 2 * size});
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = Eigen::Quaterniond::FromTwoVectors(Vec3::UnitZ(), up.normalized()).toRotationMatrix();
+  pose.linear() =
+      Eigen::Quaterniond::FromTwoVectors(Vec3::UnitZ(), up.normalized()).toRotationMatrix();
   pose.translation() = point;
   return box.transformed(pose);
 }
@@ -30,7 +31,8 @@ TEST(DepthBuffer, PlanarZMapCutByPlaneMatchesAnalyticHeights) {
   const CrustHash hash(ddf);
   const Vec3 up = Vec3(0.1, -0.05, 1.0).normalized();
   const Vec3 through(20.0, 15.0, 0.3);
-  const auto stats = cutByMesh(ddf, hash, halfSpaceAbove(through, up), Eigen::Isometry3d::Identity());
+  const auto stats =
+      cutByMesh(ddf, hash, halfSpaceAbove(through, up), Eigen::Isometry3d::Identity());
   EXPECT_GT(stats.pointsLowered, 0u);
   double worst = 0.0;
   for (int f = 0; f < ddf.faceCount(); ++f)
@@ -56,7 +58,8 @@ struct RadialSphere {
       for (int k = 0; k < 25; ++k)
         for (int i = 0; i < 25 - k; ++i) {
           const Vec3 g = ddf.basePoint(f, ddf.rasterBary(i, k));
-          ddf.heights(f)[ddf.raster().index(i, k)] = static_cast<float>((radius / g.norm() - 1.0) / 0.9);
+          ddf.heights(f)[ddf.raster().index(i, k)] =
+              static_cast<float>((radius / g.norm() - 1.0) / 0.9);
         }
   }
 };
@@ -66,7 +69,8 @@ TEST(DepthBuffer, SphereCutByPlanesMatchesAnalyticHeights) {
   const CrustHash hash(s.ddf);
   const std::vector<std::pair<Vec3, Vec3>> planes = {
       {{0, 0, 0.6}, {0, 0, 1}}, {{0.5, 0.1, 0}, {1, 0.2, 0.1}}, {{0, -0.4, -0.3}, {0, -1, -1}}};
-  for (const auto& [point, up] : planes) cutByMesh(s.ddf, hash, halfSpaceAbove(point, up), Eigen::Isometry3d::Identity());
+  for (const auto& [point, up] : planes)
+    cutByMesh(s.ddf, hash, halfSpaceAbove(point, up), Eigen::Isometry3d::Identity());
   double worst = 0.0;
   for (int f = 0; f < s.ddf.faceCount(); ++f)
     for (int k = 0; k < 25; ++k)
@@ -122,7 +126,9 @@ TEST(DepthBuffer, BallCutMatchesBallGeometry) {
         const Vec3 g = ddf.basePoint(f, ddf.rasterBary(i, k));
         const double r2 = (g - Vec3(5, 5, 0)).squaredNorm();
         const double expected =
-            r2 < radius * radius ? std::clamp(pose.translation().z() - std::sqrt(radius * radius - r2), -1.0, 1.0) : 1.0;
+            r2 < radius * radius
+                ? std::clamp(pose.translation().z() - std::sqrt(radius * radius - r2), -1.0, 1.0)
+                : 1.0;
         worst = std::max(worst, std::abs(ddf.height(f, i, k) - expected));
       }
   // Chord error of a 64 x 128 UV sphere of radius 3: about R (1 - cos(pi/64)) = 3.6e-3.
@@ -135,7 +141,8 @@ TEST(DepthBuffer, FastPathEqualsDirectPerPointEvaluation) {
   const auto mesh = test::gridMesh(1, 1, 4.0, 4.0);
   for (int trial = 0; trial < 200; ++trial) {
     std::vector<Vec3> vectors;
-    for (int v = 0; v < 4; ++v) vectors.emplace_back(0.3 * u(rng), 0.3 * u(rng), 1.0 + 0.2 * u(rng));
+    for (int v = 0; v < 4; ++v)
+      vectors.emplace_back(0.3 * u(rng), 0.3 * u(rng), 1.0 + 0.2 * u(rng));
     DisplacementField fast(mesh, vectors, 30, 1.0f), direct = fast, unrestricted = fast;
     const Vec3 c(2.0 + 2.0 * u(rng), 2.0 + 2.0 * u(rng), 0.5 * u(rng));
     const double size = trial % 2 ? 0.3 : 3.0;
@@ -167,7 +174,8 @@ TEST(DepthBuffer, LocalizationIsSupersetOfBruteForce) {
   std::vector<int> found;
   for (int trial = 0; trial < 300; ++trial) {
     const Vec3 c(u(rng), u(rng), u(rng));
-    const Vec3 q1 = c + 0.2 * Vec3(u(rng), u(rng), u(rng)), q2 = c + 0.2 * Vec3(u(rng), u(rng), u(rng)),
+    const Vec3 q1 = c + 0.2 * Vec3(u(rng), u(rng), u(rng)),
+               q2 = c + 0.2 * Vec3(u(rng), u(rng), u(rng)),
                q3 = c + 0.2 * Vec3(u(rng), u(rng), u(rng));
     hash.queryTriangle(q1, q2, q3, found);
     candidates += found.size();

@@ -62,9 +62,8 @@ TEST(DisplacementField, CanonicalPolicyTakesLowestFace) {
     int faces = 0;
     topo.forEachCopy(static_cast<PointId>(p), [&](PointCopy) { ++faces; });
     if (faces < 2) continue;
-    topo.forEachCopy(static_cast<PointId>(p), [&](PointCopy c) {
-      EXPECT_EQ(ddf.heights(c.face)[c.local], 0.25f);
-    });
+    topo.forEachCopy(static_cast<PointId>(p),
+                     [&](PointCopy c) { EXPECT_EQ(ddf.heights(c.face)[c.local], 0.25f); });
   }
 }
 

@@ -159,8 +159,9 @@ TEST(MeshConversion, BunnyConvertsToAValidDdf) {
         const Vec3 q = ddf.surfacePoint(f, i, k);
         double nearest = 1e300;
         for (const auto& t : input.triangles)
-          nearest = std::min(nearest, pointTriangleDistance(q, input.vertices[t[0]],
-                                                            input.vertices[t[1]], input.vertices[t[2]]));
+          nearest =
+              std::min(nearest, pointTriangleDistance(q, input.vertices[t[0]], input.vertices[t[1]],
+                                                      input.vertices[t[2]]));
         worst = std::max(worst, nearest);
       }
   RecordProperty("hausdorff_over_diagonal", std::to_string(worst / diagonal));

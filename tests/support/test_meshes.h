@@ -44,7 +44,8 @@ inline std::vector<ddf::Vec3> constantVectors(const ddf::SupportMesh& mesh,
 /// Radial unit vectors (for meshes around the origin).
 inline std::vector<ddf::Vec3> radialVectors(const ddf::SupportMesh& mesh, double length = 1.0) {
   std::vector<ddf::Vec3> out;
-  for (const auto vh : mesh.vertices()) out.push_back(ddf::toEigen(mesh.point(vh)).normalized() * length);
+  for (const auto vh : mesh.vertices())
+    out.push_back(ddf::toEigen(mesh.point(vh)).normalized() * length);
   return out;
 }
 

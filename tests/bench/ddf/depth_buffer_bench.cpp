@@ -18,8 +18,8 @@ using ddf::Vec3;
 
 // ns per raster point as a Google Benchmark counter: value * iterations / time, inverted.
 benchmark::Counter nsPerPoint(double points) {
-  return benchmark::Counter(points * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
-                                               benchmark::Counter::kInvert);
+  return benchmark::Counter(
+      points * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 template <class Fn>
@@ -28,7 +28,8 @@ double bestSeconds(int repeats, Fn&& fn) {
   for (int r = 0; r < repeats; ++r) {
     const auto t0 = std::chrono::steady_clock::now();
     fn();
-    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    best = std::min(best,
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   return best;
 }
@@ -53,13 +54,20 @@ void BM_Fig5_6_FullCut(benchmark::State& state) {
   state.counters["ns_per_point"] = nsPerPoint(points);
   // Same run: incremental rows vs direct per-point V-shooting on a fresh copy.
   auto fresh = singleTriangle(m);
-  const double incremental = bestSeconds(3, [&] { ddf::cutFaceByTriangle(fresh, 0, kBig1, kBig2, kBig3); });
+  const double incremental =
+      bestSeconds(3, [&] { ddf::cutFaceByTriangle(fresh, 0, kBig1, kBig2, kBig3); });
   auto fresh2 = singleTriangle(m);
-  const double direct = bestSeconds(1, [&] { ddf::cutFaceByTriangleDirect(fresh2, 0, kBig1, kBig2, kBig3); });
+  const double direct =
+      bestSeconds(1, [&] { ddf::cutFaceByTriangleDirect(fresh2, 0, kBig1, kBig2, kBig3); });
   state.counters["direct_ns_per_point"] = direct / points * 1e9;
   state.counters["ratio_direct_over_incremental"] = direct / incremental;
 }
-BENCHMARK(BM_Fig5_6_FullCut)->Arg(2000)->Arg(4000)->Arg(6000)->Arg(8000)->Arg(10000)
+BENCHMARK(BM_Fig5_6_FullCut)
+    ->Arg(2000)
+    ->Arg(4000)
+    ->Arg(6000)
+    ->Arg(8000)
+    ->Arg(10000)
     ->Unit(benchmark::kMillisecond);
 
 // Small tool triangles (about 1 % of the support edge) against a large raster: the interval
@@ -76,14 +84,16 @@ void BM_SmallTriangles_IntervalRestriction(benchmark::State& state) {
     tris.push_back({c + Vec3(0, 0, d(rng)), c + Vec3(0, 0.1, d(rng)), c + Vec3(0.1, 0, d(rng))});
   }
   auto run = [&](ddf::DisplacementField& f, bool restrict) {
-    for (const auto& t : tris) ddf::cutFaceByTriangle(f, 0, t[0], t[1], t[2], {.restrictIntervals = restrict});
+    for (const auto& t : tris)
+      ddf::cutFaceByTriangle(f, 0, t[0], t[1], t[2], {.restrictIntervals = restrict});
   };
   for (auto _ : state) {
     run(ddf, true);
     benchmark::ClobberMemory();
   }
-  state.counters["us_per_triangle"] = benchmark::Counter(
-      tris.size() * 1e-6, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["us_per_triangle"] =
+      benchmark::Counter(tris.size() * 1e-6, benchmark::Counter::kIsIterationInvariantRate |
+                                                 benchmark::Counter::kInvert);
   auto a = singleTriangle(m), b = singleTriangle(m);
   const double with = bestSeconds(3, [&] { run(a, true); });
   const double without = bestSeconds(1, [&] { run(b, false); });
@@ -106,8 +116,9 @@ void runGrinding(benchmark::State& state, GrindingWorkload& w) {
   state.counters["poses"] = static_cast<double>(w.poses.size());
   state.counters["tool_triangles"] = static_cast<double>(w.tool.triangles.size());
   state.counters["heights_lowered"] = static_cast<double>(lowered);
-  state.counters["ms_per_pose"] = benchmark::Counter(
-      w.poses.size() * 1e-3, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ms_per_pose"] =
+      benchmark::Counter(w.poses.size() * 1e-3, benchmark::Counter::kIsIterationInvariantRate |
+                                                    benchmark::Counter::kInvert);
 }
 
 void BM_Fig8_16_Grinding(benchmark::State& state) {

@@ -8,7 +8,9 @@ namespace ddfcam::bench {
 namespace {
 
 // Roll of radius 5 mm, width 10 mm, 50 segments -> 200 triangles; axis along tool +x.
-ddf::TriangleMesh roll() { return planning::makeCylinderTool({5.0, 10.0, 50}); }
+ddf::TriangleMesh roll() {
+  return planning::makeCylinderTool({5.0, 10.0, 50});
+}
 
 // Roll pose touching the design surface at (x, y), depth mm below it, feed along @p feed: axis in
 // the tangent plane perpendicular to the feed.

@@ -17,9 +17,9 @@ namespace ddfcam::bench {
 struct GrindingWorkload {
   ddf::DisplacementField ddf;
   std::shared_ptr<const ddf::HeightFieldSurface> design;
-  ddf::TriangleMesh tool;                  // 200 triangles
-  std::vector<Eigen::Isometry3d> poses;    // tool frame -> part frame
-  std::vector<float> initialHeights;       // heights before the first pass
+  ddf::TriangleMesh tool;                // 200 triangles
+  std::vector<Eigen::Isometry3d> poses;  // tool frame -> part frame
+  std::vector<float> initialHeights;     // heights before the first pass
 };
 
 /// Fig. 8.16: 100 support triangles at m = 50 on a curved B-spline patch, the 200-triangle roll

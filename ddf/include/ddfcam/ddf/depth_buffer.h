@@ -65,8 +65,8 @@ std::size_t cutFaceByTriangleDirect(DisplacementField& ddf, int face, const Vec3
 
 /// @brief Parameters of filling heights from a surface mesh.
 struct FillParams {
-  DepthBufferParams kernel;      ///< kernel settings (see DepthBufferParams)
-  ProgressCallback progress;     ///< progress and cancel; may be empty
+  DepthBufferParams kernel;   ///< kernel settings (see DepthBufferParams)
+  ProgressCallback progress;  ///< progress and cancel; may be empty
 };
 
 /// @brief Result of a fill.

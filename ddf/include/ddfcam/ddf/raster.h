@@ -16,9 +16,7 @@ struct Raster {
   /// @brief n = m - 1, the number of raster steps along an edge.
   constexpr int steps() const { return m - 1; }
   /// @brief Number of raster points on one support triangle, m (m + 1) / 2.
-  constexpr std::size_t pointCount() const {
-    return static_cast<std::size_t>(m) * (m + 1) / 2;
-  }
+  constexpr std::size_t pointCount() const { return static_cast<std::size_t>(m) * (m + 1) / 2; }
   /// @brief Offset of the first point of row k.
   constexpr std::size_t rowOffset(int k) const {
     const std::size_t n = steps();

@@ -2,10 +2,10 @@
 // ddfcam: the support triangle mesh of a DDF (OpenMesh, double precision).
 #pragma once
 
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
 #include <array>
 #include <vector>
@@ -26,10 +26,14 @@ struct SupportTraits : public OpenMesh::DefaultTraits {
 using SupportMesh = OpenMesh::TriMesh_ArrayKernelT<SupportTraits>;
 
 /// @brief Converts an OpenMesh point to Eigen.
-inline Vec3 toEigen(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
+inline Vec3 toEigen(const OpenMesh::Vec3d& p) {
+  return {p[0], p[1], p[2]};
+}
 
 /// @brief Converts an Eigen point to OpenMesh.
-inline OpenMesh::Vec3d toOpenMesh(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
+inline OpenMesh::Vec3d toOpenMesh(const Vec3& p) {
+  return {p.x(), p.y(), p.z()};
+}
 
 /// @brief Builds a support mesh from indexed triangles.
 /// @param points #V points, mm.

@@ -13,8 +13,8 @@ namespace ddfcam::ddf {
 /// @brief Indexed triangle mesh in the part frame (mm). Triangles are counter-clockwise seen
 /// from outside (for closed tools) or from the front side (for surfaces).
 struct TriangleMesh {
-  std::vector<Eigen::Vector3d> vertices;         ///< #V points, mm
-  std::vector<std::array<int, 3>> triangles;     ///< #T vertex index triples
+  std::vector<Eigen::Vector3d> vertices;      ///< #V points, mm
+  std::vector<std::array<int, 3>> triangles;  ///< #T vertex index triples
 
   /// @brief Axis-aligned bounds (min, max); both zero for an empty mesh.
   std::array<Eigen::Vector3d, 2> bounds() const;

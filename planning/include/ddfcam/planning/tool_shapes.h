@@ -8,9 +8,9 @@ namespace ddfcam::planning {
 
 /// @brief Parameters of a cylindrical grinding roll (the dissertation's cylindric tool).
 struct CylinderToolParams {
-  double radiusMm = 5.0;   ///< roll radius, mm (default: 5)
-  double widthMm = 10.0;   ///< roll width along its axis, mm (default: 10)
-  int segments = 50;       ///< facets around the circumference (default: 50 -> 200 triangles)
+  double radiusMm = 5.0;  ///< roll radius, mm (default: 5)
+  double widthMm = 10.0;  ///< roll width along its axis, mm (default: 10)
+  int segments = 50;      ///< facets around the circumference (default: 50 -> 200 triangles)
 };
 
 /// @brief Closed, outward-oriented cylinder mesh: axis along +x, centred at the origin.
