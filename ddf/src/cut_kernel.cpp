@@ -109,11 +109,12 @@ RowForms rowForms(const PairForms& f, int k) {
   return r;
 }
 
-int rowIntervals(const PairForms& forms, int k, int rowLength, KernelMode mode, double tol,
-                 std::array<std::pair<int, int>, 5>& out) {
-  const RowPoly r = rowPoly(forms, k);
-  const double lo = 0.0, hi = rowLength - 1;
-  double cuts[16];  // at most 9 roots; 16 keeps std::sort's small-array path in bounds
+namespace {
+
+// Row positions in (lo, hi) where a condition of the hit predicate can change sign: roots of
+// d, of n - d (h = 1), of n + d (h = -1, fill only) and of (lambda_j + tol) d, sorted.
+int criticalPoints(const RowPoly& r, KernelMode mode, double tol, double lo, double hi,
+                   double* cuts) {
   int count = 0;
   quadraticRoots(0.0, r.d1, r.d0, lo, hi, cuts, count);
   quadraticRoots(0.0, r.n1 - r.d1, r.n0 - r.d0, lo, hi, cuts, count);
@@ -127,23 +128,11 @@ int rowIntervals(const PairForms& forms, int k, int rowLength, KernelMode mode, 
     quadraticRoots(c2, c1, c0, lo, hi, cuts, count);
   }
   std::sort(cuts, cuts + count);
-  int written = 0;
-  double start = lo;
-  bool open = false;
-  double openAt = 0.0;
-  for (int c = 0; c <= count; ++c) {
-    const double end = c < count ? cuts[c] : hi;
-    const bool pass = hitPossible(r, 0.5 * (start + end), mode, tol);
-    if (pass && !open) open = true, openAt = start;
-    if (!pass && open) {
-      open = false;
-      out[written++] = {static_cast<int>(std::floor(openAt)) - 1,
-                        static_cast<int>(std::ceil(start)) + 1};
-    }
-    start = end;
-  }
-  if (open) out[written++] = {static_cast<int>(std::floor(openAt)) - 1, rowLength};
-  // Clamp the safety margins to the row and merge ranges they made overlap.
+  return count;
+}
+
+// Clamps the one-point safety margins to the row and merges ranges they made overlap.
+int clampAndMerge(int written, int rowLength, std::array<std::pair<int, int>, 5>& out) {
   int merged = 0;
   for (int w = 0; w < written; ++w) {
     auto range = out[w];
@@ -156,6 +145,33 @@ int rowIntervals(const PairForms& forms, int k, int rowLength, KernelMode mode, 
     }
   }
   return merged;
+}
+
+}  // namespace
+
+int rowIntervals(const PairForms& forms, int k, int rowLength, KernelMode mode, double tol,
+                 std::array<std::pair<int, int>, 5>& out) {
+  const RowPoly r = rowPoly(forms, k);
+  const double lo = 0.0, hi = rowLength - 1;
+  double cuts[16];  // at most 9 roots; 16 keeps std::sort's small-array path in bounds
+  const int count = criticalPoints(r, mode, tol, lo, hi, cuts);
+  // The predicate is constant between critical points: test each piece at its middle.
+  int written = 0;
+  double start = lo, openAt = 0.0;
+  bool open = false;
+  for (int c = 0; c <= count; ++c) {
+    const double end = c < count ? cuts[c] : hi;
+    const bool pass = hitPossible(r, 0.5 * (start + end), mode, tol);
+    if (pass && !open) open = true, openAt = start;
+    if (!pass && open) {
+      open = false;
+      out[written++] = {static_cast<int>(std::floor(openAt)) - 1,
+                        static_cast<int>(std::ceil(start)) + 1};
+    }
+    start = end;
+  }
+  if (open) out[written++] = {static_cast<int>(std::floor(openAt)) - 1, rowLength};
+  return clampAndMerge(written, rowLength, out);
 }
 
 namespace {
