@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/ddf/depth_buffer.h>
 #include <ddfcam/planning/tool_shapes.h>
 
@@ -162,6 +163,45 @@ TEST(DepthBuffer, FastPathEqualsDirectPerPointEvaluation) {
     }
     // Only stubbles through a tool-triangle edge may differ (tolerance band), never more.
     EXPECT_LE(mismatches, 2) << "trial " << trial;
+  }
+}
+
+TEST(DepthBuffer, RowRestrictionNeverChangesACutOnCurvedParts) {
+  // The row and interval restriction (projected-corner rows, straight-edge row bounds grown by
+  // the exact test, root intervals on long rows) must give bit-identical heights to scanning
+  // every raster point, for tools of all sizes at random poses on a curved multi-face part.
+  // Short rows (m = 33) take the whole-row and straight-edge paths, long rows (m = 129) the
+  // straight-edge and exact-root paths.
+  for (const auto& [subdivisions, m] : {std::pair{1, 33}, std::pair{0, 129}}) {
+    SphereParams params;
+    params.subdivisions = subdivisions;
+    params.m = m;
+    const auto part = spherePart(params);
+    std::mt19937 rng(17 + m);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const std::vector<TriangleMesh> tools = {planning::makeSphereTool(2.0, 8, 16),
+                                             planning::makeCylinderTool({4.0, 12.0, 24}),
+                                             planning::makeSphereTool(30.0, 6, 12)};
+    DisplacementField restricted = part.ddf, full = part.ddf;
+    const CrustHash hash(part.ddf);
+    for (int trial = 0; trial < 120; ++trial) {
+      const Vec3 dir = Vec3(u(rng), u(rng), u(rng)).normalized();
+      const TriangleMesh& tool = tools[trial % tools.size()];
+      const double reach = tool.bounds()[1].z();
+      Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+      pose.linear() = Eigen::Quaterniond::UnitRandom().toRotationMatrix();
+      // Centre so the tool surface dips about 1-4 mm into the 10 mm sphere.
+      pose.translation() = dir * (10.0 + reach - 1.0 - 3.0 * std::abs(u(rng)));
+      cutByMesh(restricted, hash, tool, pose);
+      cutByMesh(full, hash, tool, pose, {.restrictIntervals = false});
+    }
+    std::size_t differing = 0, lowered = 0;
+    for (std::size_t i = 0; i < full.allHeights().size(); ++i) {
+      differing += restricted.allHeights()[i] != full.allHeights()[i];
+      lowered += full.allHeights()[i] < part.ddf.allHeights()[i];
+    }
+    EXPECT_GT(lowered, 1000u) << "m = " << m;
+    EXPECT_EQ(differing, 0u) << "m = " << m;
   }
 }
 
