@@ -6,6 +6,7 @@
 #include <ddfcam/ddf/depth_buffer.h>
 #include <ddfcam/io/ddf_file.h>
 #include <ddfcam/io/mesh_io.h>
+#include <ddfcam/planning/tool_placement.h>
 #include <ddfcam/planning/tool_shapes.h>
 #include <ddfcam/progress.h>
 
@@ -16,6 +17,7 @@
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -25,56 +27,41 @@ namespace {
 constexpr const char* kHelp =
     "usage: ddfcam-cli demo [--out DIR] [--depth D]\n\n"
     "Generates the built-in demo part (a 40 x 30 mm free-form patch with 0.2 mm stock), grinds\n"
-    "one straight pass across it with the default cylindrical roll (radius 5 mm, width 10 mm,\n"
-    "axis along x) by the DDF depth buffer, and writes DIR/demo.ddf and DIR/demo.stl (adaptive\n"
-    "triangulation, eps 0.005 mm).\n\n"
+    "three overlapping passes along y with the default cylindrical roll (radius 5 mm, width\n"
+    "10 mm) held on the design surface (roll axis in the tangent plane, across the feed) by the\n"
+    "DDF depth buffer, and writes DIR/demo.ddf and DIR/demo.stl (adaptive triangulation, eps\n"
+    "0.005 mm).\n\n"
     "options:\n"
     "  --out DIR   output directory, created if needed (default ./ddfcam-demo)\n"
-    "  --depth D   infeed below the highest stock point under the roll, mm (default 0.25)\n"
+    "  --depth D   infeed below the design surface, mm (default 0.02)\n"
     "  -h, --help  show this help\n";
 
-/// The pass: roll centre x fixed, y from kStartY to kEndY in kStepMm steps.
-constexpr double kPassX = 20.0, kStartY = 6.0, kEndY = 24.0, kStepMm = 0.5;
+/// The passes: contact lines at x = kPassX, feed along +y from kStartY to kEndY in kStepMm.
+constexpr std::array<double, 3> kPassX = {14.0, 20.0, 26.0};
+constexpr double kStartY = 4.0, kEndY = 26.0, kStepMm = 0.25;
 constexpr double kEpsMm = 0.005;
 
-/// Every represented surface point of @p field (the stock before grinding), mm.
-std::vector<ddf::Vec3> surfacePoints(const ddf::DisplacementField& field) {
-  std::vector<ddf::Vec3> points;
-  const int n = field.raster().steps();
-  for (int f = 0; f < field.faceCount(); ++f)
-    for (int k = 0; k <= n; ++k)
-      for (int i = 0; i + k <= n; ++i) points.push_back(field.surfacePoint(f, i, k));
-  return points;
-}
-
-/// Highest stock z under the roll's footprint centred at (x, y), or 0 if nothing is below.
-double footprintTop(const std::vector<ddf::Vec3>& stock, double x, double y,
-                    const planning::CylinderToolParams& roll) {
-  double top = -std::numeric_limits<double>::infinity();
-  for (const ddf::Vec3& q : stock)
-    if (std::abs(q.x() - x) <= 0.5 * roll.widthMm && std::abs(q.y() - y) <= roll.radiusMm)
-      top = std::max(top, q.z());
-  return std::isfinite(top) ? top : 0.0;
-}
-
-/// Grinds the pass; returns the number of lowered heights.
-std::size_t grindPass(ddf::DisplacementField& field, double depthMm, int& poses) {
-  const std::vector<ddf::Vec3> stock = surfacePoints(field);
+/// Grinds the passes; returns the number of lowered heights.
+std::size_t grindPasses(ddf::GeneratedSurface& part, double depthMm, int& poses) {
+  const auto& design = dynamic_cast<const ddf::HeightFieldSurface&>(*part.design);
   const planning::CylinderToolParams roll;
   const ddf::TriangleMesh tool = planning::makeCylinderTool(roll);
-  const ddf::CrustHash hash(field);
+  const ddf::CrustHash hash(part.ddf);
   const auto progress = consoleProgress("grinding");
   const int steps = static_cast<int>(std::round((kEndY - kStartY) / kStepMm));
   std::size_t lowered = 0;
-  for (int s = 0; s <= steps; ++s) {
-    const double y = kStartY + s * kStepMm;
-    const double z = footprintTop(stock, kPassX, y, roll) + roll.radiusMm - depthMm;
-    const Eigen::Isometry3d pose(Eigen::Translation3d(kPassX, y, z));
-    lowered += ddf::cutByMesh(field, hash, tool, pose).pointsLowered;
-    reportProgress(progress, static_cast<double>(s + 1) / (steps + 1));
+  poses = 0;
+  for (double x : kPassX) {
+    for (int s = 0; s <= steps; ++s) {
+      const ddf::Vec3 contact = design.pointAbove(x, kStartY + s * kStepMm);
+      const Eigen::Isometry3d pose = planning::rollPoseAtContact(
+          contact, design.normal(contact), ddf::Vec3::UnitY(), roll.radiusMm, depthMm);
+      lowered += ddf::cutByMesh(part.ddf, hash, tool, pose).pointsLowered;
+      ++poses;
+    }
+    reportProgress(progress, static_cast<double>(poses) / (kPassX.size() * (steps + 1)));
   }
   endProgressLine();
-  poses = steps + 1;
   return lowered;
 }
 
@@ -91,8 +78,10 @@ void printOutcome(const DemoOutcome& o, const std::filesystem::path& dir, double
   const auto ddfPath = dir / "demo.ddf", stlPath = dir / "demo.stl";
   std::printf("demo part: %d support faces, m = %d, %zu raster points\n", o.after.faces,
               o.after.resolution, o.after.rasterPoints);
-  std::printf("ground one pass: %d roll poses at x = %.1f mm, y = %.1f..%.1f mm, infeed %.3g mm\n",
-              o.poses, kPassX, kStartY, kEndY, depth);
+  std::printf(
+      "ground %zu passes: %d roll poses at x = %.0f, %.0f, %.0f mm, y = %.1f..%.1f mm, %.3g mm "
+      "below the design surface\n",
+      kPassX.size(), o.poses, kPassX[0], kPassX[1], kPassX[2], kStartY, kEndY, depth);
   std::printf("  %zu heights lowered; height range [%.4f, %.4f] -> [%.4f, %.4f] vector lengths\n",
               o.lowered, o.before.heightMin, o.before.heightMax, o.after.heightMin,
               o.after.heightMax);
@@ -109,7 +98,7 @@ int runDemo(std::span<const std::string> words) {
   const Arguments args(words, kSpecs, "demo");
   args.expectPositionals(0, "no positional arguments");
   const std::filesystem::path dir = args.value("out").value_or("ddfcam-demo");
-  const double depth = args.positiveNumber("depth").value_or(0.25);
+  const double depth = args.positiveNumber("depth").value_or(0.02);
   const auto start = std::chrono::steady_clock::now();
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
@@ -118,7 +107,7 @@ int runDemo(std::span<const std::string> words) {
   ddf::GeneratedSurface part = ddf::demoPart();
   DemoOutcome outcome;
   outcome.before = summarize(part.ddf);
-  outcome.lowered = grindPass(part.ddf, depth, outcome.poses);
+  outcome.lowered = grindPasses(part, depth, outcome.poses);
   io::writeDdf(part.ddf, dir / "demo.ddf");
   ddf::AdaptiveTriangulationParams extract;
   extract.epsMm = kEpsMm;

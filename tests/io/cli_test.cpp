@@ -172,8 +172,8 @@ TEST(Cli, DemoWritesAGroundPart) {
   ASSERT_EQ(demo.exitCode, 0) << demo.err;
   EXPECT_THAT(demo.out, HasSubstr("heights lowered"));
   const ddf::DisplacementField field = readDdf(dir / "demo" / "demo.ddf");
-  // The stock sits 0.2 mm above the design inside a 1 mm crust (h ~ 0.2); a 0.25 mm infeed
-  // grinds below the design somewhere, so some height must now be negative.
+  // The stock sits 0.2 mm above the design inside a 1 mm crust (h ~ 0.2); the roll sinks
+  // 0.02 mm below the design along the passes, so some height must now be negative.
   const auto [lo, hi] = std::minmax_element(field.allHeights().begin(), field.allHeights().end());
   EXPECT_LT(*lo, 0.0f);
   EXPECT_GT(*hi, 0.0f);

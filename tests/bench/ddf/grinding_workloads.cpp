@@ -2,6 +2,7 @@
 #include "ddf/grinding_workloads.h"
 
 #include <ddfcam/ddf/analytic_generators.h>
+#include <ddfcam/planning/tool_placement.h>
 #include <ddfcam/planning/tool_shapes.h>
 
 namespace ddfcam::bench {
@@ -12,20 +13,11 @@ ddf::TriangleMesh roll() {
   return planning::makeCylinderTool({5.0, 10.0, 50});
 }
 
-// Roll pose touching the design surface at (x, y), depth mm below it, feed along @p feed: axis in
-// the tangent plane perpendicular to the feed.
+// Roll pose touching the design surface at (x, y), depth mm below it, feed along @p feed.
 Eigen::Isometry3d rollPose(const ddf::HeightFieldSurface& s, double x, double y,
                            const ddf::Vec3& feed, double radius, double depth) {
   const ddf::Vec3 p = s.pointAbove(x, y);
-  const ddf::Vec3 n = s.normal(p);
-  const ddf::Vec3 t = (feed - feed.dot(n) * n).normalized();
-  const ddf::Vec3 axis = n.cross(t).normalized();
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear().col(0) = axis;
-  pose.linear().col(1) = n.cross(axis);
-  pose.linear().col(2) = n;
-  pose.translation() = p + (radius - depth) * n;
-  return pose;
+  return planning::rollPoseAtContact(p, s.normal(p), feed, radius, depth);
 }
 
 std::vector<Eigen::Isometry3d> linePoses(const ddf::HeightFieldSurface& s, Eigen::Vector2d from,
