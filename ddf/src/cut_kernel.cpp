@@ -232,6 +232,8 @@ void cutRow(float* heights, int first, int last, const RowForms& r, float tol, K
   }
 }
 
+// The lambda arithmetic repeats cutRowImpl's on purpose: sharing it through a helper that
+// returns a small struct stopped GCC 12 from vectorising both loops (0.4 -> 2.3 ns per point).
 void fillRow(float* heights, int first, int last, const RowForms& r, float tol,
              KernelCounts& counts) {
   unsigned hits = 0;
