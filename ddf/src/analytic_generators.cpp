@@ -214,25 +214,29 @@ GeneratedSurface sinSinPatch(const SinSinParams& p) {
   return graphPatch(std::make_shared<SinSinSurface>(p.amplitudeMm, p.scaleMm), p.grid);
 }
 
+namespace {
+
+// Sampling grid over the rectangle of a B-spline patch (free-form patch, demo part).
+template <class Params>
+GraphPatchParams gridOver(const Params& p) {
+  return {.origin = p.shape.origin,
+          .size = p.shape.size,
+          .cellsX = p.cellsX,
+          .cellsY = p.cellsY,
+          .m = p.m,
+          .maxVectorLengthMm = p.maxVectorLengthMm,
+          .curvatureFraction = p.curvatureFraction};
+}
+
+}  // namespace
+
 GeneratedSurface freeformPatch(const FreeformPatchParams& p) {
-  const GraphPatchParams grid{.origin = p.shape.origin,
-                              .size = p.shape.size,
-                              .cellsX = p.cellsX,
-                              .cellsY = p.cellsY,
-                              .m = p.m,
-                              .maxVectorLengthMm = p.maxVectorLengthMm,
-                              .curvatureFraction = p.curvatureFraction};
+  const GraphPatchParams grid = gridOver(p);
   return graphPatch(std::make_shared<BSplinePatch>(makeBumpPatch(p.shape)), grid);
 }
 
 GeneratedSurface demoPart(const DemoPartParams& p) {
-  const GraphPatchParams grid{.origin = p.shape.origin,
-                              .size = p.shape.size,
-                              .cellsX = p.cellsX,
-                              .cellsY = p.cellsY,
-                              .m = p.m,
-                              .maxVectorLengthMm = p.maxVectorLengthMm,
-                              .curvatureFraction = p.curvatureFraction};
+  const GraphPatchParams grid = gridOver(p);
   validateGraph(grid, "demoPart");
   auto design = std::make_shared<BSplinePatch>(makeBumpPatch(p.shape));
   const double length = graphVectorLength(*design, grid);

@@ -8,19 +8,13 @@
 
 #include <random>
 
+#include "../support/random_geometry.h"
+
 namespace ddfcam::ddf {
 namespace {
 
-Vec3 randomVec(std::mt19937& rng, double scale = 1.0) {
-  std::uniform_real_distribution<double> u(-scale, scale);
-  return {u(rng), u(rng), u(rng)};
-}
-
-Vec3 randomBary(std::mt19937& rng) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  Vec3 mu(u(rng), u(rng), u(rng));
-  return mu / mu.sum();
-}
+using test::randomBary;
+using test::randomVec;
 
 /// The 4x4 determinant of sec. 4.1, evaluated by Eigen (the oracle for root counting).
 double det4(const Vec3& q, const std::array<Vec3, 3>& p, const std::array<Vec3, 3>& v, double h) {

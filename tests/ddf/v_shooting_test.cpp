@@ -7,21 +7,14 @@
 
 #include <random>
 
+#include "../support/random_geometry.h"
 #include "../support/test_meshes.h"
 
 namespace ddfcam::ddf {
 namespace {
 
-Vec3 randomVec(std::mt19937& rng, double scale = 1.0) {
-  std::uniform_real_distribution<double> u(-scale, scale);
-  return {u(rng), u(rng), u(rng)};
-}
-
-Vec3 randomBary(std::mt19937& rng) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  Vec3 mu(u(rng), u(rng), u(rng));
-  return mu / mu.sum();
-}
+using test::randomBary;
+using test::randomVec;
 
 TEST(VShooting, HitsPlaneParallelToSupportAtKnownHeight) {
   // Support in z = 0 with vectors (0, 0, 0.5); target in z = 2 above: h = 2 / 0.5 = 4.
