@@ -2,12 +2,10 @@
 // ddfcam-cli demo: the built-in demo part ground along a short path, written as .ddf and .stl.
 #include <ddfcam/ddf/adaptive_triangulation.h>
 #include <ddfcam/ddf/analytic_generators.h>
-#include <ddfcam/ddf/crust_hash.h>
-#include <ddfcam/ddf/depth_buffer.h>
 #include <ddfcam/io/ddf_file.h>
 #include <ddfcam/io/mesh_io.h>
-#include <ddfcam/planning/tool_placement.h>
-#include <ddfcam/planning/tool_shapes.h>
+#include <ddfcam/planning/demo_project.h>
+#include <ddfcam/planning/path_simulation.h>
 #include <ddfcam/progress.h>
 
 #include "arguments.h"
@@ -36,33 +34,23 @@ constexpr const char* kHelp =
     "  --depth D   infeed below the design surface, mm (default 0.02)\n"
     "  -h, --help  show this help\n";
 
-/// The passes: contact lines at x = kPassX, feed along +y from kStartY to kEndY in kStepMm.
-constexpr std::array<double, 3> kPassX = {14.0, 20.0, 26.0};
-constexpr double kStartY = 4.0, kEndY = 26.0, kStepMm = 0.25;
+/// Error bound of the written STL, mm.
 constexpr double kEpsMm = 0.005;
 
-/// Grinds the passes; returns the number of lowered heights.
+/// Grinds the demo passes (planning::demoPasses) with the default roll; returns the number of
+/// lowered heights and the number of poses.
 std::size_t grindPasses(ddf::GeneratedSurface& part, double depthMm, int& poses) {
-  const auto& design = dynamic_cast<const ddf::HeightFieldSurface&>(*part.design);
-  const planning::CylinderToolParams roll;
-  const ddf::TriangleMesh tool = planning::makeCylinderTool(roll);
-  const ddf::CrustHash hash(part.ddf);
-  const auto progress = consoleProgress("grinding");
-  const int steps = static_cast<int>(std::round((kEndY - kStartY) / kStepMm));
-  std::size_t lowered = 0;
-  poses = 0;
-  for (double x : kPassX) {
-    for (int s = 0; s <= steps; ++s) {
-      const ddf::Vec3 contact = design.pointAbove(x, kStartY + s * kStepMm);
-      const Eigen::Isometry3d pose = planning::rollPoseAtContact(
-          contact, design.normal(contact), ddf::Vec3::UnitY(), roll.radiusMm, depthMm);
-      lowered += ddf::cutByMesh(part.ddf, hash, tool, pose).pointsLowered;
-      ++poses;
-    }
-    reportProgress(progress, static_cast<double>(poses) / (kPassX.size() * (steps + 1)));
-  }
+  const planning::Tool roll;
+  planning::DemoPassesParams passes;
+  passes.depthMm = depthMm;
+  const planning::ToolPath path = planning::demoPasses(*part.design, roll, passes);
+  planning::PathSimulationParams params;
+  params.progress = consoleProgress("grinding");
+  const planning::PathSimulationReport report =
+      planning::simulatePath(part.ddf, roll, path, params);
   endProgressLine();
-  return lowered;
+  poses = report.poses;
+  return report.pointsLowered;
 }
 
 /// What one demo run did, for the summary.
@@ -78,10 +66,12 @@ void printOutcome(const DemoOutcome& o, const std::filesystem::path& dir, double
   const auto ddfPath = dir / "demo.ddf", stlPath = dir / "demo.stl";
   std::printf("demo part: %d support faces, m = %d, %zu raster points\n", o.after.faces,
               o.after.resolution, o.after.rasterPoints);
+  const planning::DemoPassesParams passes;
   std::printf(
       "ground %zu passes: %d roll poses at x = %.0f, %.0f, %.0f mm, y = %.1f..%.1f mm, %.3g mm "
       "below the design surface\n",
-      kPassX.size(), o.poses, kPassX[0], kPassX[1], kPassX[2], kStartY, kEndY, depth);
+      passes.passXMm.size(), o.poses, passes.passXMm[0], passes.passXMm[1], passes.passXMm[2],
+      passes.startYMm, passes.endYMm, depth);
   std::printf("  %zu heights lowered; height range [%.4f, %.4f] -> [%.4f, %.4f] vector lengths\n",
               o.lowered, o.before.heightMin, o.before.heightMax, o.after.heightMin,
               o.after.heightMax);

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+// ddfcam: the .ddfproj binary file format of a workbench project (planning::Project).
+#pragma once
+
+#include <ddfcam/planning/project.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace ddfcam::io {
+
+/// @brief Project format version this build writes and the newest it reads.
+inline constexpr std::uint32_t kProjectFormatVersion = 1;
+
+/// @brief Serialises @p project in the .ddfproj format (format version kProjectFormatVersion).
+///
+/// Every number is little-endian and written byte by byte (host order does not matter); f32/f64
+/// are IEEE bit patterns (NaN payloads survive); i32 is two's complement; a string is a u32 byte
+/// count followed by the bytes (UTF-8 by convention, stored unchanged).
+///
+/// | offset | size | field |
+/// |---|---|---|
+/// | 0 | 8 | magic "DDFPRJ\x1a\n" (a .ddf starts with "DDFCAM\x1a\n") |
+/// | 8 | 4 | u32 format version |
+/// | 12 | 4 | u32 chunk count C |
+/// | 16 | 8 | u64 total file size in bytes, checksum included |
+/// | 24 | | C chunks: 4-byte ASCII tag, u64 payload size L, L payload bytes |
+/// | end-4 | 4 | u32 CRC-32 (IEEE, zlib) of every byte before it |
+///
+/// Chunks of version 1 (a reader rejects any other tag; a later version adds tags and raises
+/// the version). "PROJ" comes first; the others may follow in any order (encodeProject writes
+/// them in the order of this table), and the order of the chunks with one tag is the order of
+/// the project's vector:
+/// | tag | count | payload |
+/// |---|---|---|
+/// | "PROJ" | 1 | string partName, string sourcePath |
+/// | "PART" | 0..1 | the part: its complete .ddf encoding (encodeDdf, ddf_file.h) |
+/// | "DSGN" | 0..1 | design mesh: u64 V, u64 T, V x 3 f64 (mm), T x 3 i32 vertex indices |
+/// | "TOOL" | per tool | string name, i32 kind, f64 radiusMm, f64 widthMm, i32 segments |
+/// | "PATH" | per path | string name, i32 tool, f64 feed, u64 P, P poses, u64 S, S i32 |
+/// | "FELD" | per field | string name, string unit, u8 isSigned 0/1, u64 N, N f32 values |
+/// | "REGN" | per region | string name, 3 f32 colour RGB, u64 N, N i32 support faces |
+/// | "STAT" | per state | string name, u64 N, N f32 heights |
+/// | "SURF" | per surface | string name, then to the payload's end the .ddf encoding |
+///
+/// The S i32 of a path are its passStarts, the feed is feedMmPerMin (mm/min), kind is the
+/// ToolKind value.
+///
+/// A pose is 19 f64: the 4 x 4 matrix of PathPose::pose in column-major order (bottom row
+/// included, so the stored matrix is exactly the one in memory), then the contact x y z (mm).
+/// Embedding the .ddf encoding restores positions, vectors, face vertex order and heights
+/// bit-exactly.
+/// @return the file content.
+/// @throws InvalidInput if @p project violates planning::validateProject (nothing is encoded).
+std::string encodeProject(const planning::Project& project);
+
+/// @brief Rebuilds a project from .ddfproj content; the exact inverse of encodeProject
+/// (planning::projectsEqual holds between the original and the decoded project).
+/// @param bytes whole file content. @param sourceName file name used in messages.
+/// @throws IoError naming @p sourceName and the problem if the content is empty, truncated
+/// (the message names the chunk where it ends), not a project file, of a newer format version,
+/// damaged (checksum mismatch), holds an unknown or misplaced chunk, a chunk whose payload does
+/// not parse, or values that violate planning::validateProject (the InvalidInput is nested).
+planning::Project decodeProject(std::string_view bytes, const std::string& sourceName);
+
+/// @brief Writes @p project to @p path atomically (temporary file in the same directory +
+/// rename): on any failure the previous content of @p path, if any, is left unchanged.
+/// @throws InvalidInput as encodeProject (the file is not touched).
+/// @throws IoError if the file cannot be written (missing directory, disk full, ...).
+void writeProject(const planning::Project& project, const std::filesystem::path& path);
+
+/// @brief Reads a .ddfproj file written by writeProject.
+/// @throws IoError if the file is missing or unreadable, or as decodeProject.
+planning::Project readProject(const std::filesystem::path& path);
+
+}  // namespace ddfcam::io

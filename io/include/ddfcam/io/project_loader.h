@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+// ddfcam: opening any file the workbench accepts (project, .ddf, mesh) as a Project.
+#pragma once
+
+#include <ddfcam/io/part_loader.h>
+#include <ddfcam/planning/project.h>
+
+#include <filesystem>
+
+namespace ddfcam::io {
+
+/// @brief True if @p path has the project file suffix ".ddfproj" (any case).
+bool isProjectFile(const std::filesystem::path& path);
+
+/// @brief True if @p path has a suffix openProject() accepts: .ddfproj, .ddf, .stl, .obj,
+/// .ply, .off (any case).
+bool canOpenAsProject(const std::filesystem::path& path);
+
+/// @brief Opens @p path as a project: a .ddfproj file as saved; a .ddf or mesh file as a new
+/// project on that part (partName = file name, sourcePath = @p path, one simulation state
+/// "stock" with the initial heights; a mesh file is also kept as the design mesh, the surface
+/// the part is compared with).
+/// @param params conversion parameters and progress for part files (ignored for projects).
+/// @throws IoError naming the file (nested cause); Cancelled through params.progress.
+planning::Project openProject(const std::filesystem::path& path, const LoadPartParams& params = {});
+
+}  // namespace ddfcam::io

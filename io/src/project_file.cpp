@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: MIT
+// ddfcam: .ddfproj saving and loading (layout documented in project_file.h).
+#include <ddfcam/io/project_file.h>
+
+#include <ddfcam/error.h>
+#include <ddfcam/io/ddf_file.h>
+
+#include "file_access.h"
+#include "project_chunks.h"
+#include "project_layout.h"
+
+#include <exception>
+
+namespace ddfcam::io {
+namespace {
+
+using detail::ChunkView;
+using detail::PayloadReader;
+
+ddf::DisplacementField decodeEmbeddedDdf(std::string_view bytes, const PayloadReader& in,
+                                         const std::string& what) {
+  try {
+    return decodeDdf(bytes, what);
+  } catch (const Error&) {
+    std::throw_with_nested(IoError(in.context() + ": " + what + " is not a valid .ddf encoding"));
+  }
+}
+
+/// Fills a Project chunk by chunk; enforces the chunk order rules of format version 1.
+class ProjectDecoder {
+ public:
+  explicit ProjectDecoder(const std::string& sourceName) : name_(sourceName) {}
+
+  void add(const ChunkView& chunk) {
+    PayloadReader in(chunk.payload, name_ + ": " + chunk.label());
+    if (chunk.index == 0 && chunk.tag != detail::kTagProject)
+      in.fail("damaged project file: the first chunk must be 'PROJ'");
+    if (chunk.tag == detail::kTagProject) {
+      if (chunk.index != 0) in.fail("a second project header");
+      detail::readProjectInfo(in, project_);
+      sawProject_ = true;
+    } else if (chunk.tag == detail::kTagPart) {
+      if (project_.part) in.fail("a second part");
+      project_.part = decodeEmbeddedDdf(in.rest(), in, "the embedded part");
+    } else if (chunk.tag == detail::kTagDesign) {
+      if (project_.designMesh) in.fail("a second design mesh");
+      project_.designMesh = detail::readDesignMesh(in);
+    } else {
+      addListItem(chunk.tag, in);
+    }
+    in.finish();
+  }
+
+  planning::Project finish() {
+    if (!sawProject_) throw IoError(name_ + ": damaged project file: it holds no 'PROJ' chunk");
+    try {
+      planning::validateProject(project_);
+    } catch (const InvalidInput&) {
+      std::throw_with_nested(IoError(name_ + ": the project in the file is invalid"));
+    }
+    return std::move(project_);
+  }
+
+ private:
+  void addListItem(const std::string& tag, PayloadReader& in) {
+    if (tag == detail::kTagField) {
+      project_.fields.push_back(detail::readField(in));
+    } else if (tag == detail::kTagRegion) {
+      project_.regions.push_back(detail::readRegion(in));
+    } else if (tag == detail::kTagTool) {
+      project_.tools.push_back(detail::readTool(in));
+    } else if (tag == detail::kTagPath) {
+      project_.paths.push_back(detail::readPath(in));
+    } else if (tag == detail::kTagState) {
+      project_.states.push_back(detail::readState(in));
+    } else if (tag == detail::kTagSurface) {
+      planning::NamedSurface surface;
+      surface.name = in.string("surface name");
+      surface.ddf = decodeEmbeddedDdf(in.rest(), in, "surface '" + surface.name + "'");
+      project_.surfaces.push_back(std::move(surface));
+    } else {
+      in.fail("unknown chunk type in format version " + std::to_string(kProjectFormatVersion) +
+              " (damaged file, or written by an incompatible program)");
+    }
+  }
+
+  const std::string& name_;
+  planning::Project project_;
+  bool sawProject_ = false;
+};
+
+}  // namespace
+
+std::string encodeProject(const planning::Project& project) {
+  planning::validateProject(project);
+  detail::ProjectEncoder encoder;
+  detail::putProjectInfo(encoder.beginChunk(detail::kTagProject), project);
+  if (project.part) encoder.beginChunk(detail::kTagPart).append(encodeDdf(*project.part));
+  if (project.designMesh)
+    detail::putDesignMesh(encoder.beginChunk(detail::kTagDesign), *project.designMesh);
+  for (const planning::Tool& tool : project.tools)
+    detail::putTool(encoder.beginChunk(detail::kTagTool), tool);
+  for (const planning::ToolPath& path : project.paths)
+    detail::putPath(encoder.beginChunk(detail::kTagPath), path);
+  for (const planning::ScalarField& field : project.fields)
+    detail::putField(encoder.beginChunk(detail::kTagField), field);
+  for (const planning::Region& region : project.regions)
+    detail::putRegion(encoder.beginChunk(detail::kTagRegion), region);
+  for (const planning::SimulationState& state : project.states)
+    detail::putState(encoder.beginChunk(detail::kTagState), state);
+  for (const planning::NamedSurface& surface : project.surfaces) {
+    std::string& out = encoder.beginChunk(detail::kTagSurface);
+    detail::putString(out, surface.name);
+    out.append(encodeDdf(surface.ddf));
+  }
+  return encoder.finish();
+}
+
+planning::Project decodeProject(std::string_view bytes, const std::string& sourceName) {
+  ProjectDecoder decoder(sourceName);
+  for (const ChunkView& chunk : detail::splitProjectChunks(bytes, sourceName)) decoder.add(chunk);
+  return decoder.finish();
+}
+
+void writeProject(const planning::Project& project, const std::filesystem::path& path) {
+  const std::string bytes = encodeProject(project);
+  detail::writeFileAtomically(path, bytes);
+}
+
+planning::Project readProject(const std::filesystem::path& path) {
+  return decodeProject(detail::readFileBytes(path), path.string());
+}
+
+}  // namespace ddfcam::io

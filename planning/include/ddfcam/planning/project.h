@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: MIT
+// ddfcam: everything a session of work produces, as plain values (the workbench document).
+#pragma once
+
+#include <ddfcam/ddf/displacement_field.h>
+#include <ddfcam/ddf/triangle_mesh.h>
+#include <ddfcam/planning/tool.h>
+#include <ddfcam/planning/tool_path.h>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ddfcam::planning {
+
+/// @brief A scalar per raster point of the part, laid out like the heights
+/// (DisplacementField::allHeights(): face after face, Raster order; F * pointsPerFace values).
+/// Copies of a shared raster point may differ (each face keeps its own); NaN marks "no value".
+struct ScalarField {
+  std::string name;           ///< e.g. "height", "material removed"
+  std::string unit;           ///< e.g. "mm", "1/mm"; empty for dimensionless
+  bool isSigned = false;      ///< values of both signs are meaningful (use a diverging map)
+  std::vector<float> values;  ///< F * pointsPerFace values
+
+  bool operator==(const ScalarField&) const = default;
+};
+
+/// @brief A named region of the part: a set of support faces.
+struct Region {
+  std::string name;                                 ///< shown in lists
+  std::vector<int> faces;                           ///< support face indices, ascending, unique
+  std::array<float, 3> color = {0.9f, 0.6f, 0.2f};  ///< display colour, RGB in [0, 1]
+
+  bool operator==(const Region&) const = default;
+};
+
+/// @brief A named snapshot of the part's heights (e.g. before and after a simulated pass).
+struct SimulationState {
+  std::string name;            ///< e.g. "stock", "after roll pass 1"
+  std::vector<float> heights;  ///< F * pointsPerFace values, layout of allHeights()
+
+  bool operator==(const SimulationState&) const = default;
+};
+
+/// @brief A named DDF besides the part, e.g. a deformed or a mould surface.
+struct NamedSurface {
+  std::string name;            ///< shown in lists
+  ddf::DisplacementField ddf;  ///< the surface; its support need not match the part's
+};
+
+/// @brief The document of a workbench session.
+struct Project {
+  std::string partName;    ///< "demo part" or the source file name
+  std::string sourcePath;  ///< file the part came from; empty for generated parts
+  std::optional<ddf::DisplacementField> part;  ///< the part with its current heights
+  /// Reference (design) surface the part is compared with: the mesh it was converted from, or
+  /// a triangulation of a generated part's design surface. Empty if there is none.
+  std::optional<ddf::TriangleMesh> designMesh;
+  std::vector<ScalarField> fields;      ///< computed fields, all sized like the part's heights
+  std::vector<Region> regions;          ///< segmented regions
+  std::vector<Tool> tools;              ///< tools referenced by paths
+  std::vector<ToolPath> paths;          ///< tool paths
+  std::vector<SimulationState> states;  ///< height snapshots, e.g. "stock" first
+  std::vector<NamedSurface> surfaces;   ///< deformed / mould surfaces
+};
+
+/// @brief Checks the invariants a Project must hold before it is saved or shown: every
+/// field and state has F * pointsPerFace values; region faces are ascending, unique and in
+/// range; every path's tool index is valid and its passStarts are strictly ascending, in range
+/// and start with 0 when the path has poses; every tool passes validateTool(); the design
+/// mesh's triangles reference existing vertices; fields, states or regions without a part are
+/// an error.
+/// @throws InvalidInput naming the first offending item (e.g. "field 'height': 12 values,
+/// expected 1536").
+void validateProject(const Project& project);
+
+/// @brief Exact equality of two projects: every value bit-identical (heights, positions,
+/// vectors and face vertex order of all DDFs included). NaN equals NaN at the same place.
+bool projectsEqual(const Project& a, const Project& b);
+
+}  // namespace ddfcam::planning

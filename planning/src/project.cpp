@@ -1,0 +1,193 @@
+// SPDX-License-Identifier: MIT
+// ddfcam: invariants and exact equality of the workbench document.
+#include <ddfcam/error.h>
+#include <ddfcam/planning/project.h>
+
+#include <cstring>
+#include <string>
+#include <type_traits>
+
+namespace ddfcam::planning {
+namespace {
+
+std::string quoted(const std::string& kind, const std::string& name) {
+  return kind + " '" + name + "'";
+}
+
+void checkLayout(const std::string& item, std::size_t count, std::size_t expected) {
+  if (count != expected)
+    throw InvalidInput(item + ": " + std::to_string(count) + " values, expected " +
+                       std::to_string(expected));
+}
+
+void checkRegion(const Region& region, int faceCount) {
+  for (std::size_t i = 0; i < region.faces.size(); ++i) {
+    const int f = region.faces[i];
+    if (f < 0 || f >= faceCount)
+      throw InvalidInput(quoted("region", region.name) + ": face " + std::to_string(f) +
+                         " out of range [0, " + std::to_string(faceCount) + ")");
+    if (i > 0 && f <= region.faces[i - 1])
+      throw InvalidInput(quoted("region", region.name) + ": face " + std::to_string(f) +
+                         " at position " + std::to_string(i) + " is not above its predecessor " +
+                         std::to_string(region.faces[i - 1]) +
+                         " (faces must be ascending, unique)");
+  }
+}
+
+void checkPath(const ToolPath& path, std::size_t toolCount) {
+  const std::string item = quoted("path", path.name);
+  if (path.tool < 0 || static_cast<std::size_t>(path.tool) >= toolCount)
+    throw InvalidInput(item + ": tool index " + std::to_string(path.tool) + " out of range (" +
+                       std::to_string(toolCount) + " tools)");
+  const int poses = static_cast<int>(path.poses.size());
+  if (poses > 0 && (path.passStarts.empty() || path.passStarts.front() != 0))
+    throw InvalidInput(item + ": the first pass must start at pose 0");
+  for (std::size_t i = 0; i < path.passStarts.size(); ++i) {
+    const int s = path.passStarts[i];
+    if (s < 0 || s >= poses)
+      throw InvalidInput(item + ": pass start " + std::to_string(s) + " out of range (" +
+                         std::to_string(poses) + " poses)");
+    if (i > 0 && s <= path.passStarts[i - 1])
+      throw InvalidInput(item + ": pass start " + std::to_string(s) + " at position " +
+                         std::to_string(i) + " is not above its predecessor (must ascend)");
+  }
+}
+
+void checkMesh(const ddf::TriangleMesh& mesh) {
+  const int n = static_cast<int>(mesh.vertices.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int v : mesh.triangles[t])
+      if (v < 0 || v >= n)
+        throw InvalidInput("design mesh: triangle " + std::to_string(t) + " references vertex " +
+                           std::to_string(v) + " of " + std::to_string(n));
+}
+
+// Items that only make sense on a part: report the first one present.
+void checkNeedsPart(const Project& project) {
+  if (!project.fields.empty())
+    throw InvalidInput(quoted("field", project.fields.front().name) + " without a part");
+  if (!project.states.empty())
+    throw InvalidInput(quoted("state", project.states.front().name) + " without a part");
+  if (!project.regions.empty())
+    throw InvalidInput(quoted("region", project.regions.front().name) + " without a part");
+}
+
+void checkPartItems(const Project& project) {
+  const ddf::DisplacementField& part = *project.part;
+  const std::size_t values = part.allHeights().size();
+  for (const ScalarField& field : project.fields)
+    checkLayout(quoted("field", field.name), field.values.size(), values);
+  for (const SimulationState& state : project.states)
+    checkLayout(quoted("state", state.name), state.heights.size(), values);
+  for (const Region& region : project.regions) checkRegion(region, part.faceCount());
+}
+
+// Bitwise equality of contiguous trivially copyable values: NaN equals NaN with the same
+// payload, while 0.0 and -0.0 differ (a round trip must reproduce the bits).
+template <class T>
+bool sameBits(const T* a, const T* b, std::size_t count) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  return count == 0 || std::memcmp(a, b, count * sizeof(T)) == 0;
+}
+
+template <class T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && sameBits(a.data(), b.data(), a.size());
+}
+
+bool sameBits(double a, double b) {
+  return sameBits(&a, &b, 1);
+}
+
+bool sameBits(const ddf::Vec3& a, const ddf::Vec3& b) {
+  return sameBits(a.data(), b.data(), 3);
+}
+
+bool sameMesh(const ddf::TriangleMesh& a, const ddf::TriangleMesh& b) {
+  if (a.vertices.size() != b.vertices.size() || a.triangles != b.triangles) return false;
+  for (std::size_t v = 0; v < a.vertices.size(); ++v)
+    if (!sameBits(a.vertices[v], b.vertices[v])) return false;
+  return true;
+}
+
+bool sameDdf(const ddf::DisplacementField& a, const ddf::DisplacementField& b) {
+  if (a.vertexCount() != b.vertexCount() || a.faceCount() != b.faceCount() ||
+      a.resolution() != b.resolution())
+    return false;
+  for (int f = 0; f < a.faceCount(); ++f)
+    if (a.faceVertices(f) != b.faceVertices(f)) return false;
+  for (int v = 0; v < a.vertexCount(); ++v)
+    if (!sameBits(a.position(v), b.position(v)) || !sameBits(a.vector(v), b.vector(v)))
+      return false;
+  return sameBits(a.allHeights(), b.allHeights());
+}
+
+template <class T, class Same>
+bool sameOptional(const std::optional<T>& a, const std::optional<T>& b, Same same) {
+  if (a.has_value() != b.has_value()) return false;
+  return !a || same(*a, *b);
+}
+
+template <class T, class Same>
+bool sameEach(const std::vector<T>& a, const std::vector<T>& b, Same same) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!same(a[i], b[i])) return false;
+  return true;
+}
+
+bool sameTool(const Tool& a, const Tool& b) {
+  return a.name == b.name && a.kind == b.kind && sameBits(a.radiusMm, b.radiusMm) &&
+         sameBits(a.widthMm, b.widthMm) && a.segments == b.segments;
+}
+
+bool samePose(const PathPose& a, const PathPose& b) {
+  return sameBits(a.pose.matrix().data(), b.pose.matrix().data(), 16) &&
+         sameBits(a.contact, b.contact);
+}
+
+bool samePath(const ToolPath& a, const ToolPath& b) {
+  return a.name == b.name && a.tool == b.tool && sameBits(a.feedMmPerMin, b.feedMmPerMin) &&
+         a.passStarts == b.passStarts && sameEach(a.poses, b.poses, samePose);
+}
+
+bool sameField(const ScalarField& a, const ScalarField& b) {
+  return a.name == b.name && a.unit == b.unit && a.isSigned == b.isSigned &&
+         sameBits(a.values, b.values);
+}
+
+bool sameRegion(const Region& a, const Region& b) {
+  return a.name == b.name && a.faces == b.faces &&
+         sameBits(a.color.data(), b.color.data(), a.color.size());
+}
+
+bool sameState(const SimulationState& a, const SimulationState& b) {
+  return a.name == b.name && sameBits(a.heights, b.heights);
+}
+
+bool sameSurface(const NamedSurface& a, const NamedSurface& b) {
+  return a.name == b.name && sameDdf(a.ddf, b.ddf);
+}
+
+}  // namespace
+
+void validateProject(const Project& project) {
+  if (project.part)
+    checkPartItems(project);
+  else
+    checkNeedsPart(project);
+  if (project.designMesh) checkMesh(*project.designMesh);
+  for (const Tool& tool : project.tools) validateTool(tool);
+  for (const ToolPath& path : project.paths) checkPath(path, project.tools.size());
+}
+
+bool projectsEqual(const Project& a, const Project& b) {
+  return a.partName == b.partName && a.sourcePath == b.sourcePath &&
+         sameOptional(a.part, b.part, sameDdf) &&
+         sameOptional(a.designMesh, b.designMesh, sameMesh) &&
+         sameEach(a.fields, b.fields, sameField) && sameEach(a.regions, b.regions, sameRegion) &&
+         sameEach(a.tools, b.tools, sameTool) && sameEach(a.paths, b.paths, samePath) &&
+         sameEach(a.states, b.states, sameState) && sameEach(a.surfaces, b.surfaces, sameSurface);
+}
+
+}  // namespace ddfcam::planning
