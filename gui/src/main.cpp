@@ -22,8 +22,8 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: ddfcam [--screenshot OUT.png] [PART]\n"
-    "  PART                 a .ddf file or a mesh (.stl .obj .ply .off) converted to a DDF;\n"
-    "                       without it the built-in demo part is shown\n"
+    "  PART                 a project (.ddfproj), a .ddf file or a mesh (.stl .obj .ply .off)\n"
+    "                       converted to a DDF; without it the built-in demo part is shown\n"
     "  --screenshot OUT.png load PART, render one frame of the window to OUT.png and exit\n"
     "  -h, --help           this text\n";
 
@@ -93,21 +93,26 @@ int main(int argc, char** argv) {
   ddfcam::gui::setDefaultSurfaceFormat();
   QApplication app(argc, argv);
   QApplication::setApplicationName("ddfcam");
+  QApplication::setOrganizationName("ddfcam");
   ddfcam::gui::VtkErrorMonitor::install();
 
   ddfcam::gui::WorkbenchDialogs dialogs;
+  ddfcam::gui::WorkbenchOptions workbench;
+  workbench.openDemoAtStart = !options->part;
   bool failed = false;
   if (options->screenshot) {
-    // Batch mode: no modal box; runUserAction already logged the error to stderr.
-    dialogs.error = [&failed](const QString&, const QString&) { failed = true; };
+    // Batch mode: nothing modal; errors go to stderr (the console dock takes over the log).
+    dialogs.error = [&failed](const QString& title, const QString& message) {
+      failed = true;
+      std::fprintf(stderr, "ddfcam: %s: %s\n", qPrintable(title), qPrintable(message));
+    };
+    dialogs.offerRecovery = [](const QStringList&) { return -1; };
+    dialogs.unsavedChanges = [] { return ddfcam::gui::UnsavedChoice::Discard; };
   }
-  ddfcam::gui::MainWindow window(dialogs, /*openDemoAtStart=*/!options->part);
-  // An unreadable PART was reported; interactively the demo part is shown instead.
-  if (options->part && !window.openPath(QString::fromStdString(*options->part)) &&
-      !options->screenshot)
-    window.openDemo();
+  ddfcam::gui::MainWindow window(dialogs, workbench);
+  if (options->part) window.openPath(QString::fromStdString(*options->part));
   if (options->screenshot) {
-    if (failed) return 1;
+    if (!window.waitForJobs(600'000) || failed) return 1;
     return writeScreenshot(window, QString::fromStdString(*options->screenshot));
   }
   window.show();

@@ -1,86 +1,163 @@
 // SPDX-License-Identifier: MIT
-// ddfcam gui: MainWindow wiring: menus -> controller/scene/view, errors -> runUserAction.
+// ddfcam gui: MainWindow wiring: services, docks, menus -> actions, panels, jobs, drag and drop.
 #include <ddfcam/gui/main_window.h>
 
 #include <ddfcam/error.h>
-#include <ddfcam/gui/part_controller.h>
+#include <ddfcam/gui/camera_tool_bar.h>
+#include <ddfcam/gui/console_dock.h>
+#include <ddfcam/gui/default_dialogs.h>
+#include <ddfcam/gui/document.h>
+#include <ddfcam/gui/job_progress_widget.h>
+#include <ddfcam/gui/job_runner.h>
+#include <ddfcam/gui/panels/fields_panel.h>
+#include <ddfcam/gui/panels/part_panel.h>
+#include <ddfcam/gui/panels/pick_panel.h>
+#include <ddfcam/gui/panels/simulation_panel.h>
 #include <ddfcam/gui/part_scene.h>
+#include <ddfcam/gui/part_view.h>
+#include <ddfcam/gui/plot_dock.h>
+#include <ddfcam/gui/recent_files.h>
+#include <ddfcam/gui/recovery_manager.h>
 #include <ddfcam/gui/vtk_view.h>
+#include <ddfcam/gui/workbench.h>
 
 #include <QAction>
-#include <QApplication>
-#include <QFileDialog>
+#include <QCloseEvent>
+#include <QDockWidget>
 #include <QFileInfo>
-#include <QKeySequence>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
+#include <QMimeData>
+#include <QSettings>
 #include <QStatusBar>
-
-#include <filesystem>
+#include <QUndoStack>
 
 namespace ddfcam::gui {
 
-namespace {
-
-WorkbenchDialogs withDefaults(WorkbenchDialogs d, QWidget* parent) {
-  if (!d.openPath)
-    d.openPath = [parent] {
-      return QFileDialog::getOpenFileName(
-          parent, QObject::tr("Open part"), QString(),
-          QObject::tr("Parts (*.ddf *.stl *.obj *.ply *.off);;DDF (*.ddf);;"
-                      "Meshes (*.stl *.obj *.ply *.off);;All files (*)"));
-    };
-  if (!d.screenshotPath)
-    d.screenshotPath = [parent] {
-      return QFileDialog::getSaveFileName(parent, QObject::tr("Save screenshot"), "ddfcam.png",
-                                          QObject::tr("PNG images (*.png)"));
-    };
-  if (!d.error) d.error = messageBoxReporter(parent);
-  return d;
-}
-
-}  // namespace
-
-MainWindow::MainWindow(WorkbenchDialogs dialogs, bool openDemoAtStart, QWidget* parent)
-    : QMainWindow(parent) {
+MainWindow::MainWindow(WorkbenchDialogs dialogs, WorkbenchOptions options, QWidget* parent)
+    : QMainWindow(parent), dialogs_(withDefaultDialogs(std::move(dialogs), this)) {
   setWindowTitle(tr("ddfcam workbench"));
+  setAcceptDrops(true);
   view_ = new VtkView(this);
   setCentralWidget(view_);
-  scene_ = std::make_unique<PartScene>(view_->renderer());
-  controller_ = std::make_unique<PartController>(*scene_);
-  dialogs_ = withDefaults(std::move(dialogs), this);
-
-  status_ = new QLabel(this);
-  statusBar()->addPermanentWidget(status_, 1);
+  createServices(options);
+  createDocks();
   createFileMenu();
+  createEditMenu();
   createViewMenu();
-  resize(1200, 800);
-  if (openDemoAtStart) openDemo();
+  registerDefaultPanels();
+  resize(1280, 820);
+  // The 3D view is the workbench; the plots get a strip below it.
+  resizeDocks({plots_}, {190}, Qt::Vertical);
+  updateTitle();
+  updateStatus();
+  if (!projectActions_->offerRecovery(*recovery_) && options.openDemoAtStart) openDemo();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  jobs_->cancel();
+  jobs_->waitForFinished(10'000);
+}
+
+void MainWindow::createServices(const WorkbenchOptions& options) {
+  document_ = std::make_unique<Document>();
+  ErrorReporter report = [this](const QString& title, const QString& message) {
+    if (dialogs_.error) dialogs_.error(title, message);
+  };
+  jobs_ = std::make_unique<JobRunner>(report);
+  partView_ = std::make_unique<PartView>(*document_, *view_);
+  QSettings* settings = options.settings ? options.settings : new QSettings(this);
+  recent_ = std::make_unique<RecentFiles>(settings);
+  RecoveryParams recovery;
+  if (!options.recoveryDirectory.isEmpty()) recovery.directory = options.recoveryDirectory;
+  recovery.intervalMs = options.autosaveIntervalMs;
+  recovery_ = std::make_unique<RecoveryManager>(*document_, recovery);
+  projectActions_ = std::make_unique<ProjectActions>(*document_, *jobs_, *recent_, dialogs_);
+
+  cameraBar_ = new CameraToolBar(view_, this);
+  addToolBar(Qt::TopToolBarArea, cameraBar_);
+  status_ = new QLabel(this);
+  statusBar()->addPermanentWidget(status_, 1);
+  jobProgress_ = new JobProgressWidget(*jobs_, this);
+  // Keep its room while idle: a status bar that grows during a job would resize the 3D view.
+  QSizePolicy policy = jobProgress_->sizePolicy();
+  policy.setRetainSizeWhenHidden(true);
+  jobProgress_->setSizePolicy(policy);
+  statusBar()->addPermanentWidget(jobProgress_);
+  connect(jobProgress_, &JobProgressWidget::statusMessage, this,
+          [this](const QString& message) { statusBar()->showMessage(message, 8000); });
+
+  connect(document_.get(), &Document::modifiedChanged, this, &MainWindow::updateTitle);
+  connect(document_.get(), &Document::filePathChanged, this, &MainWindow::updateTitle);
+  connect(document_.get(), &Document::changed, this, &MainWindow::updateTitle);
+  connect(partView_.get(), &PartView::geometryChanged, this, [this](bool partReplaced) {
+    updateStatus();
+    // An oblique view from the front-right, z up: parts are mostly z-maps or lie on the table.
+    if (partReplaced) view_->viewFrom(ViewDirection::Isometric);
+  });
+}
+
+void MainWindow::createDocks() {
+  plots_ = new PlotDock(this);
+  addDockWidget(Qt::BottomDockWidgetArea, plots_);
+  console_ = new ConsoleDock(this);
+  console_->installLogSink();
+  addDockWidget(Qt::BottomDockWidgetArea, console_);
+  tabifyDockWidget(console_, plots_);
+  plots_->raise();
+  workbench_ = std::make_unique<Workbench>(
+      Workbench{*document_, *jobs_, *partView_, *plots_, *console_, dialogs_.error});
+}
+
+void MainWindow::registerPanel(Panel* panel) {
+  auto* dock = new QDockWidget(panel->title(), this);
+  dock->setObjectName("panel_" + panel->id());
+  dock->setWidget(panel);
+  addDockWidget(panel->area(), dock);
+  for (Panel* other : panels_) {
+    if (other->area() == panel->area()) {
+      tabifyDockWidget(qobject_cast<QDockWidget*>(other->parentWidget()), dock);
+      break;
+    }
+  }
+  panelsMenu_->addAction(dock->toggleViewAction());
+  if (!panel->menuTitle().isEmpty())
+    menuNamed(panel->menuTitle())->addActions(panel->menuActions());
+  panels_.push_back(panel);
+}
+
+void MainWindow::registerDefaultPanels() {
+  registerPanel(new PartPanel(*workbench_));
+  registerPanel(new FieldsPanel(*workbench_));
+  registerPanel(new SimulationPanel(*workbench_));
+  registerPanel(new PickPanel(*workbench_));
+  if (auto* first = findChild<QDockWidget*>("panel_fields")) first->raise();
+}
+
+QMenu* MainWindow::menuNamed(const QString& title) {
+  for (QAction* action : menuBar()->actions())
+    if (action->menu() && action->text() == title) return action->menu();
+  return menuBar()->addMenu(title);
+}
 
 bool MainWindow::openPath(const QString& path) {
-  const bool ok = runUserAction(dialogs_.error, tr("Open %1").arg(QFileInfo(path).fileName()), [&] {
-    controller_->openFile(std::filesystem::path(path.toStdString()));
-  });
-  if (ok) afterPartChanged();
-  return ok;
+  return projectActions_->openPath(path);
 }
 
 bool MainWindow::openDemo() {
-  const bool ok =
-      runUserAction(dialogs_.error, tr("Open demo part"), [&] { controller_->openDemo(); });
-  if (ok) afterPartChanged();
-  return ok;
+  return projectActions_->openDemo();
 }
 
-bool MainWindow::saveScreenshot(const QString& path) {
+bool MainWindow::saveScreenshot(const QString& path, QSize size) {
   return runUserAction(dialogs_.error, tr("Save screenshot"), [&] {
-    if (!view_->saveScreenshot(path))
+    if (!view_->saveScreenshot(path, size))
       throw IoError("cannot write the screenshot to '" + path.toStdString() + "'");
   });
+}
+
+bool MainWindow::waitForJobs(int timeoutMs) {
+  return jobs_->waitForFinished(timeoutMs);
 }
 
 QString MainWindow::statusText() const {
@@ -89,59 +166,128 @@ QString MainWindow::statusText() const {
 
 void MainWindow::createFileMenu() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
-  QAction* open = file->addAction(tr("&Open..."), this, [this] {
-    const QString path = dialogs_.openPath ? dialogs_.openPath() : QString();
-    if (!path.isEmpty()) openPath(path);
+  auto add = [&](const QString& text, const char* name, auto slot, QKeySequence key = {}) {
+    QAction* action = file->addAction(text, this, slot);
+    action->setObjectName(name);
+    action->setShortcut(key);
+    return action;
+  };
+  add(
+      tr("&Open..."), "actionOpen",
+      [this] {
+        const QString path = dialogs_.openPath ? dialogs_.openPath() : QString();
+        if (!path.isEmpty()) openPath(path);
+      },
+      QKeySequence::Open);
+  add(tr("Open &demo part"), "actionOpenDemo", [this] { openDemo(); });
+  recentMenu_ = file->addMenu(tr("Open &recent"));
+  recentMenu_->setObjectName("menuRecent");
+  connect(recentMenu_, &QMenu::aboutToShow, this, [this] {
+    recent_->populate(recentMenu_, [this](const QString& path) { openPath(path); });
   });
-  open->setObjectName("actionOpen");
-  open->setShortcut(QKeySequence::Open);
-  QAction* demo = file->addAction(tr("Open &demo part"), this, [this] { openDemo(); });
-  demo->setObjectName("actionOpenDemo");
-  QAction* shot = file->addAction(tr("Save &screenshot..."), this, [this] {
-    const QString path = dialogs_.screenshotPath ? dialogs_.screenshotPath() : QString();
-    if (!path.isEmpty()) saveScreenshot(path);
-  });
-  shot->setObjectName("actionSaveScreenshot");
   file->addSeparator();
-  QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-  quit->setObjectName("actionQuit");
-  quit->setShortcut(QKeySequence::Quit);
+  add(
+      tr("&Save project"), "actionSave", [this] { projectActions_->save(); }, QKeySequence::Save);
+  add(
+      tr("Save project &as..."), "actionSaveAs",
+      [this] {
+        const QString path = dialogs_.saveProjectPath ? dialogs_.saveProjectPath() : QString();
+        if (!path.isEmpty()) projectActions_->saveAs(path);
+      },
+      QKeySequence::SaveAs);
+  add(tr("Save s&creenshot..."), "actionSaveScreenshot", [this] {
+    if (const auto request = dialogs_.screenshot ? dialogs_.screenshot() : std::nullopt)
+      saveScreenshot(request->path, request->size);
+  });
+  file->addSeparator();
+  add(
+      tr("&Quit"), "actionQuit", [this] { close(); }, QKeySequence::Quit);
+}
+
+void MainWindow::createEditMenu() {
+  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+  undo->setObjectName("actionUndo");
+  undo->setShortcut(QKeySequence::Undo);
+  QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+  redo->setObjectName("actionRedo");
+  redo->setShortcut(QKeySequence::Redo);
+  edit->addAction(undo);
+  edit->addAction(redo);
+  edit->addSeparator();
+  QAction* cancel = edit->addAction(tr("&Cancel running job"), this, [this] { jobs_->cancel(); });
+  cancel->setObjectName("actionCancelJob");
+  cancel->setShortcut(Qt::Key_Escape);
 }
 
 void MainWindow::createViewMenu() {
   QMenu* menu = menuBar()->addMenu(tr("&View"));
-  addLayerToggle(menu, tr("&Surface (shaded)"), "actionShowSurface",
-                 static_cast<int>(Layer::Surface), true);
-  addLayerToggle(menu, tr("Support &mesh (wireframe)"), "actionShowSupport",
-                 static_cast<int>(Layer::Support), false);
-  addLayerToggle(menu, tr("S&tubbles (lines)"), "actionShowStubbles",
-                 static_cast<int>(Layer::Stubbles), false);
+  auto toggle = [&](const QString& text, const char* name, bool on, auto apply) {
+    QAction* action = menu->addAction(text);
+    action->setObjectName(name);
+    action->setCheckable(true);
+    action->setChecked(on);
+    connect(action, &QAction::toggled, this, apply);
+    apply(on);
+  };
+  PartScene& scene = partView_->scene();
+  auto layer = [this, &scene](Layer l) {
+    return [this, &scene, l](bool on) {
+      scene.setVisible(l, on);
+      view_->requestRender();
+    };
+  };
+  toggle(tr("&Surface (shaded)"), "actionShowSurface", true, layer(Layer::Surface));
+  toggle(tr("Support &mesh (wireframe)"), "actionShowSupport", false, layer(Layer::Support));
+  toggle(tr("S&tubbles (lines)"), "actionShowStubbles", false, layer(Layer::Stubbles));
+  toggle(tr("Tool &paths"), "actionShowPaths", true,
+         [this](bool on) { partView_->setPathsVisible(on); });
+  toggle(tr("Displacement &vectors (arrows)"), "actionShowVectors", false,
+         [this](bool on) { partView_->setVectorGlyphsVisible(on); });
   menu->addSeparator();
-  QAction* fit = menu->addAction(tr("&Fit view"), this, [this] { view_->fitCamera(); });
-  fit->setObjectName("actionFitView");
-  fit->setShortcut(Qt::Key_F);
+  menu->addActions(cameraBar_->actions());
+  menu->addSeparator();
+  panelsMenu_ = menu->addMenu(tr("&Panels"));
+  panelsMenu_->setObjectName("menuPanels");
+  panelsMenu_->addAction(plots_->toggleViewAction());
+  panelsMenu_->addAction(console_->toggleViewAction());
 }
 
-QAction* MainWindow::addLayerToggle(QMenu* menu, const QString& text, const QString& name,
-                                    int layer, bool checked) {
-  QAction* action = menu->addAction(text);
-  action->setObjectName(name);
-  action->setCheckable(true);
-  action->setChecked(checked);
-  scene_->setVisible(static_cast<Layer>(layer), checked);
-  connect(action, &QAction::toggled, this, [this, layer](bool on) {
-    scene_->setVisible(static_cast<Layer>(layer), on);
-    view_->requestRender();
-  });
-  return action;
+void MainWindow::updateTitle() {
+  const auto& project = document_->project();
+  QString name = document_->filePath().isEmpty()
+                     ? QString::fromStdString(project.part ? project.partName : "no part")
+                     : QFileInfo(document_->filePath()).fileName();
+  setWindowTitle(tr("%1%2 - ddfcam workbench").arg(name, document_->isModified() ? "*" : ""));
 }
 
-void MainWindow::afterPartChanged() {
-  status_->setText(QString::fromStdString(controller_->summary()));
-  if (const PartDocument* doc = controller_->document())
-    setWindowTitle(tr("%1 - ddfcam workbench").arg(QString::fromStdString(doc->name)));
-  // An oblique view from the front-right, z up: parts are mostly z-maps or lie on the table.
-  view_->fitCameraFrom(0.45, -1.0, 0.85, 0.0, 0.0, 1.0);
+void MainWindow::updateStatus() {
+  status_->setText(QString::fromStdString(partView_->summary()));
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!projectActions_->maybeSave()) {
+    event->ignore();
+    return;
+  }
+  jobs_->cancel();
+  jobs_->waitForFinished(10'000);
+  recovery_->discardRecovery();
+  event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  const auto urls = event->mimeData()->urls();
+  if (urls.size() == 1 && urls.front().isLocalFile() &&
+      ProjectActions::canOpen(urls.front().toLocalFile()))
+    event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  const auto urls = event->mimeData()->urls();
+  if (urls.size() != 1 || !urls.front().isLocalFile()) return;
+  event->acceptProposedAction();
+  openPath(urls.front().toLocalFile());
 }
 
 }  // namespace ddfcam::gui

@@ -5,10 +5,12 @@
 #include <ddfcam/ddf/adaptive_triangulation.h>
 #include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/ddf/stubble_lines.h>
+#include <ddfcam/ddf/surface_sampling.h>
 #include <ddfcam/gui/adapters/poly_data.h>
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace ddfcam::gui {
 
@@ -27,28 +29,40 @@ int stubbleStride(const ddf::DisplacementField& ddf, std::size_t budget) {
   return std::max(1, static_cast<int>(std::ceil(s)));
 }
 
+void buildRasterSurface(const ddf::DisplacementField& ddf, PartGeometry& out) {
+  const ddf::RasterMesh raster = ddf::extractRasterMesh(ddf);
+  // extractRasterMesh lays out (m-1)^2 triangles per face in face order.
+  const std::size_t perFace = static_cast<std::size_t>(ddf.resolution() - 1) *
+                              static_cast<std::size_t>(ddf.resolution() - 1);
+  out.surfaceTriangleFace.resize(raster.mesh.triangles.size());
+  for (std::size_t t = 0; t < out.surfaceTriangleFace.size(); ++t)
+    out.surfaceTriangleFace[t] = static_cast<int>(t / perFace);
+  out.surfaceTriangles = raster.mesh.triangles.size();
+  out.surfaceSamples = ddf::sampleRasterMesh(ddf, raster);
+  out.scene.surface = toSurfacePolyData(raster.mesh, out.surfaceTriangleFace);
+}
+
 void buildSurface(const ddf::DisplacementField& ddf, const DisplayParams& params, double diagonalMm,
                   PartGeometry& out) {
   const double n = ddf.resolution() - 1;
   const double rasterTriangles = static_cast<double>(ddf.faceCount()) * n * n;
-  if (rasterTriangles <= static_cast<double>(params.rasterTriangleBudget)) {
-    const ddf::RasterMesh raster = ddf::extractRasterMesh(ddf);
-    out.surfaceTriangles = raster.mesh.triangles.size();
-    out.scene.surface = toSurfacePolyData(raster.mesh);
-    return;
-  }
+  if (rasterTriangles <= static_cast<double>(params.rasterTriangleBudget))
+    return buildRasterSurface(ddf, out);
   ddf::AdaptiveTriangulationParams adaptive;
   adaptive.epsMm = std::max(params.adaptiveEpsFraction * diagonalMm, 1e-6);
-  ddf::TriangleMesh mesh = ddf::triangulateAdaptive(ddf, adaptive);
+  ddf::AdaptiveTriangulation result = ddf::triangulateAdaptiveWithStats(ddf, adaptive);
   // Coarsen until the budget holds; a few rounds suffice since the count falls ~4x per round.
-  for (int round = 0; round < 6 && mesh.triangles.size() > params.adaptiveTriangleBudget; ++round) {
+  for (int round = 0; round < 6 && result.mesh.triangles.size() > params.adaptiveTriangleBudget;
+       ++round) {
     adaptive.epsMm *= 4.0;
-    mesh = ddf::triangulateAdaptive(ddf, adaptive);
+    result = ddf::triangulateAdaptiveWithStats(ddf, adaptive);
   }
   out.adaptiveSurface = true;
   out.adaptiveEpsMm = adaptive.epsMm;
-  out.surfaceTriangles = mesh.triangles.size();
-  out.scene.surface = toSurfacePolyData(mesh);
+  out.surfaceTriangles = result.mesh.triangles.size();
+  out.surfaceSamples = ddf::sampleMeshVertices(ddf, result.mesh, result.triangleFace);
+  out.scene.surface = toSurfacePolyData(result.mesh, result.triangleFace);
+  out.surfaceTriangleFace = std::move(result.triangleFace);
 }
 
 }  // namespace

@@ -2,6 +2,9 @@
 // ddfcam gui: VtkView, the QOpenGLWidget <-> vtkGenericOpenGLRenderWindow bridge.
 #include <ddfcam/gui/vtk_view.h>
 
+#include <ddfcam/error.h>
+
+#include <QLineF>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
@@ -17,12 +20,43 @@
 #include <vtkOpenGLState.h>
 #include <vtkRenderer.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace ddfcam::gui {
 
 namespace {
 constexpr double kBackground[3] = {0.20, 0.22, 0.27};
+// GL_MAX_RENDERBUFFER_SIZE of Mesa llvmpipe and common desktop GPUs.
+constexpr int kMaxImageSide = 16384;
+
+struct ViewSetup {
+  std::array<double, 3> towardsCamera;
+  std::array<double, 3> up;
+};
+
+ViewSetup viewSetup(ViewDirection direction) {
+  switch (direction) {
+    case ViewDirection::PlusX:
+      return {{1, 0, 0}, {0, 0, 1}};
+    case ViewDirection::MinusX:
+      return {{-1, 0, 0}, {0, 0, 1}};
+    case ViewDirection::PlusY:
+      return {{0, 1, 0}, {0, 0, 1}};
+    case ViewDirection::MinusY:
+      return {{0, -1, 0}, {0, 0, 1}};
+    case ViewDirection::PlusZ:
+      return {{0, 0, 1}, {0, 1, 0}};
+    case ViewDirection::MinusZ:
+      return {{0, 0, -1}, {0, 1, 0}};
+    case ViewDirection::Isometric:
+      return {{1, -1, 1}, {0, 0, 1}};
+  }
+  return {{1, -1, 1}, {0, 0, 1}};
+}
 }  // namespace
 
 VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
@@ -36,6 +70,13 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   auto lights = vtkSmartPointer<vtkLightKit>::New();
   lights->AddLightsToRenderer(renderer_);
   renderWindow_->AddRenderer(renderer_);
+  // 2D annotations in their own layer: drawn after the whole 3D scene, untouched by its
+  // translucency passes, and never the target of camera interaction.
+  annotationRenderer_ = vtkSmartPointer<vtkRenderer>::New();
+  annotationRenderer_->SetLayer(1);
+  annotationRenderer_->InteractiveOff();
+  renderWindow_->SetNumberOfLayers(2);
+  renderWindow_->AddRenderer(annotationRenderer_);
   // Qt owns the context and the final framebuffer: VTK renders offscreen and we blit.
   renderWindow_->SetOwnContext(false);
   renderWindow_->SetFrameBlitModeToNoBlit();
@@ -73,6 +114,10 @@ VtkView::~VtkView() {
 vtkRenderer* VtkView::renderer() const {
   return renderer_;
 }
+vtkRenderer* VtkView::annotationRenderer() const {
+  return annotationRenderer_;
+}
+
 vtkGenericOpenGLRenderWindow* VtkView::renderWindow() const {
   return renderWindow_;
 }
@@ -96,6 +141,12 @@ void VtkView::fitCameraFrom(double dx, double dy, double dz, double upX, double 
   fitCamera();
 }
 
+void VtkView::viewFrom(ViewDirection direction) {
+  const ViewSetup v = viewSetup(direction);
+  fitCameraFrom(v.towardsCamera[0], v.towardsCamera[1], v.towardsCamera[2], v.up[0], v.up[1],
+                v.up[2]);
+}
+
 void VtkView::requestRender() {
   update();
 }
@@ -107,6 +158,71 @@ QImage VtkView::renderImage() {
 bool VtkView::saveScreenshot(const QString& path) {
   const QImage image = renderImage();
   return !image.isNull() && image.save(path);
+}
+
+QImage VtkView::renderImage(QSize devicePixels) {
+  const int w = devicePixels.width(), h = devicePixels.height();
+  if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
+    throw InvalidInput("renderImage: image size " + std::to_string(w) + " x " + std::to_string(h) +
+                       " pixels, each side must be 1 to " + std::to_string(kMaxImageSide));
+  // grabFramebuffer() creates the context and runs initializeGL() for a widget never shown.
+  if (!glReady_) grabFramebuffer();
+  if (!glReady_) return {};
+  makeCurrent();
+  const int oldW = renderWindow_->GetSize()[0], oldH = renderWindow_->GetSize()[1];
+  setRenderSize(w, h);
+  renderWindow_->SetReadyForRendering(true);
+  renderWindow_->Render();
+  renderWindow_->SetReadyForRendering(false);
+  QImage image = readDisplayFramebuffer(w, h);
+  setRenderSize(oldW, oldH);
+  doneCurrent();
+  // The widget's framebuffer still holds its last frame; repaint it at its own size anyway so
+  // nothing of the offscreen frame can show.
+  update();
+  return image;
+}
+
+bool VtkView::saveScreenshot(const QString& path, QSize devicePixels) {
+  const QImage image = renderImage(devicePixels);
+  return !image.isNull() && image.save(path);
+}
+
+QImage VtkView::readDisplayFramebuffer(int width, int height) {
+  vtkOpenGLFramebufferObject* display = renderWindow_->GetDisplayFramebuffer();
+  if (!display) return {};
+  std::vector<unsigned char> rgba(static_cast<std::size_t>(width) * height * 4);
+  vtkOpenGLState* state = renderWindow_->GetState();
+  state->PushFramebufferBindings();
+  display->Bind(GL_READ_FRAMEBUFFER);
+  display->ActivateReadBuffer(0);
+  // RGBA rows are 4-byte aligned, the default GL_PACK_ALIGNMENT: no pixel-store change that
+  // VTK's state cache would not know about.
+  context()->functions()->glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  state->PopFramebufferBindings();
+  QImage image(width, height, QImage::Format_RGB32);
+  // GL rows run bottom-up; alpha is dropped (trap 2: VTK leaves it below 1 on the background).
+  for (int y = 0; y < height; ++y) {
+    const unsigned char* row = rgba.data() + static_cast<std::size_t>(height - 1 - y) * width * 4;
+    auto* out = reinterpret_cast<QRgb*>(image.scanLine(y));
+    for (int x = 0; x < width; ++x) out[x] = qRgb(row[4 * x], row[4 * x + 1], row[4 * x + 2]);
+  }
+  return image;
+}
+
+Eigen::Vector2d VtkView::displayPosition(QPointF widgetPos) const {
+  const double dpr = devicePixelRatioF();
+  const int height = renderWindow_->GetSize()[1];
+  return {widgetPos.x() * dpr, height - widgetPos.y() * dpr};
+}
+
+QPointF VtkView::widgetPosition(const Eigen::Vector3d& world) const {
+  renderer_->SetWorldPoint(world.x(), world.y(), world.z(), 1.0);
+  renderer_->WorldToDisplay();
+  const double* display = renderer_->GetDisplayPoint();
+  const double dpr = devicePixelRatioF();
+  const int height = renderWindow_->GetSize()[1];
+  return {display[0] / dpr, (height - display[1]) / dpr};
 }
 
 void VtkView::initializeGL() {
@@ -124,10 +240,13 @@ void VtkView::initializeGL() {
 
 void VtkView::resizeGL(int w, int h) {
   const double dpr = devicePixelRatioF();
-  const int dw = std::max(1, static_cast<int>(std::lround(w * dpr)));
-  const int dh = std::max(1, static_cast<int>(std::lround(h * dpr)));
-  renderWindow_->SetSize(dw, dh);
-  interactor_->UpdateSize(dw, dh);
+  setRenderSize(std::max(1, static_cast<int>(std::lround(w * dpr))),
+                std::max(1, static_cast<int>(std::lround(h * dpr))));
+}
+
+void VtkView::setRenderSize(int devicePixelsX, int devicePixelsY) {
+  renderWindow_->SetSize(devicePixelsX, devicePixelsY);
+  interactor_->UpdateSize(devicePixelsX, devicePixelsY);
 }
 
 void VtkView::paintGL() {
@@ -215,6 +334,9 @@ void VtkView::mousePressEvent(QMouseEvent* event) {
   interactor_->SetRepeatCount(event->type() == QEvent::MouseButtonDblClick ? 1 : 0);
   switch (event->button()) {
     case Qt::LeftButton:
+      leftDown_ = true;
+      dragged_ = false;
+      pressPosition_ = event->position();
       interactor_->LeftButtonPressEvent();
       break;
     case Qt::MiddleButton:
@@ -232,9 +354,14 @@ void VtkView::mousePressEvent(QMouseEvent* event) {
 void VtkView::mouseReleaseEvent(QMouseEvent* event) {
   setEventPosition(event->position(), event->modifiers());
   switch (event->button()) {
-    case Qt::LeftButton:
+    case Qt::LeftButton: {
       interactor_->LeftButtonReleaseEvent();
+      const bool click = leftDown_ && !dragged_ &&
+                         QLineF(pressPosition_, event->position()).length() < kClickSlopPx;
+      leftDown_ = false;
+      if (click) emit clicked(event->position(), event->modifiers());
       break;
+    }
     case Qt::MiddleButton:
       interactor_->MiddleButtonReleaseEvent();
       break;
@@ -248,6 +375,9 @@ void VtkView::mouseReleaseEvent(QMouseEvent* event) {
 }
 
 void VtkView::mouseMoveEvent(QMouseEvent* event) {
+  // Once a press has wandered off it is a drag, even if it comes back.
+  if (leftDown_ && QLineF(pressPosition_, event->position()).length() >= kClickSlopPx)
+    dragged_ = true;
   setEventPosition(event->position(), event->modifiers());
   interactor_->MouseMoveEvent();
   event->accept();

@@ -8,12 +8,15 @@
 #include <QtTest/QtTest>
 
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkIdList.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <set>
 #include <utility>
 
@@ -36,6 +39,23 @@ Eigen::Vector3d pointOf(vtkPolyData* poly, vtkIdType id) {
   return {p[0], p[1], p[2]};
 }
 
+std::vector<vtkIdType> cellPoints(vtkPolyData* poly, vtkIdType cell) {
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  poly->GetCellPoints(cell, ids);
+  std::vector<vtkIdType> out(static_cast<std::size_t>(ids->GetNumberOfIds()));
+  for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) out[k] = ids->GetId(k);
+  return out;
+}
+
+/// Barycentric coordinates of @p p in triangle (a, b, c), all projected onto the xy plane.
+Eigen::Vector3d baryXy(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                       const Eigen::Vector3d& c) {
+  Eigen::Matrix2d m;
+  m << b.x() - a.x(), c.x() - a.x(), b.y() - a.y(), c.y() - a.y();
+  const Eigen::Vector2d st = m.inverse() * Eigen::Vector2d(p.x() - a.x(), p.y() - a.y());
+  return {1.0 - st.x() - st.y(), st.x(), st.y()};
+}
+
 }  // namespace
 
 class AdaptersTest : public QObject {
@@ -46,6 +66,10 @@ class AdaptersTest : public QObject {
   void wireframeDrawsEveryEdgeOnce();
   void segmentsKeepTheirEndpoints();
   void planePatchRasterOrAdaptiveByBudget();
+  void surfaceKeepsVertexOfSplitPointsAndFaceOfCells();
+  void planeGeometryFacesAndSamplesMatchTheSupport();
+  void polylinesKeepPointOrder();
+  void glyphsAreArrowsOfTheGivenLength();
 };
 
 void AdaptersTest::surfaceHasOutwardFlatNormalsOnSharpEdges() {
@@ -125,6 +149,134 @@ void AdaptersTest::planePatchRasterOrAdaptiveByBudget() {
     const vtkIdType stubbles = geometry->scene.stubbles->GetNumberOfLines();
     QVERIFY(stubbles > 0 && stubbles <= static_cast<vtkIdType>(params.stubbleBudget));
   }
+}
+
+void AdaptersTest::surfaceKeepsVertexOfSplitPointsAndFaceOfCells() {
+  const TriangleMesh mesh = octahedron();
+  const std::vector<int> faces = {7, 6, 5, 4, 3, 2, 1, 0};
+  auto poly = ddfcam::gui::toSurfacePolyData(mesh, faces);
+  // Every edge is a feature edge: each of the 8 faces gets its own 3 corner points.
+  QCOMPARE(poly->GetNumberOfPoints(), vtkIdType{24});
+  vtkDataArray* vertex = poly->GetPointData()->GetArray(ddfcam::gui::kVertexArrayName);
+  QVERIFY(vertex != nullptr);
+  for (vtkIdType p = 0; p < poly->GetNumberOfPoints(); ++p) {
+    const auto v = static_cast<std::size_t>(vertex->GetTuple1(p));
+    QVERIFY(v < mesh.vertices.size());
+    QCOMPARE(pointOf(poly, p), mesh.vertices[v]);
+  }
+  vtkDataArray* face = poly->GetCellData()->GetArray(ddfcam::gui::kFaceArrayName);
+  QVERIFY(face != nullptr);
+  for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c) {
+    QCOMPARE(static_cast<int>(face->GetTuple1(c)), faces[c]);
+    // Cell order is the triangle order: the cell's points copy the triangle's vertices.
+    const auto ids = cellPoints(poly, c);
+    for (int k = 0; k < 3; ++k)
+      QCOMPARE(static_cast<int>(vertex->GetTuple1(ids[k])), mesh.triangles[c][k]);
+  }
+  QVERIFY(ddfcam::gui::toSurfacePolyData(mesh)->GetCellData()->GetArray("face") == nullptr);
+  QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput,
+                           ddfcam::gui::toSurfacePolyData(mesh, std::vector<int>{1, 2}));
+}
+
+void AdaptersTest::planeGeometryFacesAndSamplesMatchTheSupport() {
+  ddfcam::ddf::PlanePatchParams plane;
+  plane.cellsX = 6;
+  plane.cellsY = 4;
+  plane.m = 9;
+  const auto part = ddfcam::ddf::planePatch(plane);
+  const auto& ddf = part.ddf;
+  for (std::size_t budget : {std::size_t{1'000'000}, std::size_t{10}}) {
+    ddfcam::gui::DisplayParams params;
+    params.rasterTriangleBudget = budget;
+    const auto geometry = ddfcam::gui::buildPartGeometry(ddf, params);
+    vtkPolyData* surface = geometry.scene.surface;
+    QCOMPARE(geometry.surfaceTriangleFace.size(), geometry.surfaceTriangles);
+    QCOMPARE(surface->GetNumberOfCells(), static_cast<vtkIdType>(geometry.surfaceTriangles));
+    vtkDataArray* face = surface->GetCellData()->GetArray(ddfcam::gui::kFaceArrayName);
+    QVERIFY(face != nullptr);
+    // The plane's vectors are vertical: a triangle of face f lies over support triangle f.
+    for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c) {
+      const int f = geometry.surfaceTriangleFace[c];
+      QCOMPARE(static_cast<int>(face->GetTuple1(c)), f);
+      Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+      for (vtkIdType id : cellPoints(surface, c)) centroid += pointOf(surface, id) / 3.0;
+      const auto& fv = ddf.faceVertices(f);
+      const Eigen::Vector3d b =
+          baryXy(centroid, ddf.position(fv[0]), ddf.position(fv[1]), ddf.position(fv[2]));
+      QVERIFY2(b.minCoeff() > -1e-9, qPrintable(QString("cell %1 face %2").arg(c).arg(f)));
+    }
+    // One sample per mesh vertex; each one's support point lies under that vertex.
+    vtkDataArray* vertex = surface->GetPointData()->GetArray(ddfcam::gui::kVertexArrayName);
+    const auto& samples = geometry.surfaceSamples;
+    QCOMPARE(samples.face.size(), static_cast<std::size_t>(vertex->GetRange(0)[1]) + 1);
+    QCOMPARE(samples.bary.size(), samples.face.size());
+    for (vtkIdType p = 0; p < surface->GetNumberOfPoints(); ++p) {
+      const auto v = static_cast<std::size_t>(vertex->GetTuple1(p));
+      const auto& fv = ddf.faceVertices(samples.face[v]);
+      const Eigen::Vector3d& w = samples.bary[v];
+      const Eigen::Vector3d g =
+          w[0] * ddf.position(fv[0]) + w[1] * ddf.position(fv[1]) + w[2] * ddf.position(fv[2]);
+      const Eigen::Vector3d q = pointOf(surface, p);
+      QVERIFY2(std::hypot(g.x() - q.x(), g.y() - q.y()) < 1e-6,
+               qPrintable(QString("point %1 budget %2").arg(p).arg(budget)));
+    }
+  }
+}
+
+void AdaptersTest::polylinesKeepPointOrder() {
+  const std::vector<std::vector<Eigen::Vector3d>> lines = {
+      {{0, 0, 0}, {1, 0, 0}, {2, 1, 0}, {3, 1, 1}}, {{9, 9, 9}}, {{5, 5, 5}, {6, 5, 5}, {7, 5, 5}}};
+  auto poly = ddfcam::gui::toPolylinePolyData(lines);
+  // The single-point line is no line: 2 cells, 4 + 3 points.
+  QCOMPARE(poly->GetNumberOfLines(), vtkIdType{2});
+  QCOMPARE(poly->GetNumberOfPoints(), vtkIdType{7});
+  vtkDataArray* index = poly->GetCellData()->GetArray(ddfcam::gui::kPolylineArrayName);
+  QVERIFY(index != nullptr);
+  const int expected[2] = {0, 2};
+  for (vtkIdType c = 0; c < 2; ++c) {
+    const auto& line = lines[expected[c]];
+    QCOMPARE(static_cast<int>(index->GetTuple1(c)), expected[c]);
+    const auto ids = cellPoints(poly, c);
+    QCOMPARE(ids.size(), line.size());
+    for (std::size_t k = 0; k < ids.size(); ++k) QCOMPARE(pointOf(poly, ids[k]), line[k]);
+  }
+  QCOMPARE(ddfcam::gui::toPolylinePolyData({})->GetNumberOfCells(), vtkIdType{0});
+}
+
+void AdaptersTest::glyphsAreArrowsOfTheGivenLength() {
+  const std::vector<Eigen::Vector3d> points = {{0, 0, 0}, {1, 2, 3}, {-4, 0, 2}};
+  const std::vector<Eigen::Vector3d> directions = {{0, 0, 5}, {1, 1, 0}, {-0.1, 0.2, -0.3}};
+  const double length = 2.0;
+  auto poly = ddfcam::gui::toGlyphPolyData(points, directions, length);
+  QCOMPARE(poly->GetNumberOfPoints(), vtkIdType{12});
+  QCOMPARE(poly->GetNumberOfLines(), vtkIdType{9});
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d d = directions[i].normalized();
+    // Shaft: base to tip = base + length * d.
+    const auto shaft = cellPoints(poly, static_cast<vtkIdType>(3 * i));
+    QCOMPARE(pointOf(poly, shaft[0]), points[i]);
+    const Eigen::Vector3d tip = pointOf(poly, shaft[1]);
+    QVERIFY((tip - (points[i] + length * d)).norm() < 1e-12);
+    // Heads: from the tip, a quarter of the length, 25 degrees off the reversed shaft,
+    // mirror images of each other about the shaft.
+    Eigen::Vector3d sideSum = Eigen::Vector3d::Zero();
+    for (int h = 1; h <= 2; ++h) {
+      const auto head = cellPoints(poly, static_cast<vtkIdType>(3 * i + h));
+      QCOMPARE(pointOf(poly, head[0]), tip);
+      const Eigen::Vector3d stroke = pointOf(poly, head[1]) - tip;
+      QVERIFY(std::abs(stroke.norm() - 0.25 * length) < 1e-12);
+      const double angle = std::acos(std::clamp(stroke.normalized().dot(-d), -1.0, 1.0));
+      QVERIFY(std::abs(angle - 25.0 * std::numbers::pi / 180.0) < 1e-9);
+      sideSum += stroke - stroke.dot(d) * d;
+    }
+    QVERIFY(sideSum.norm() < 1e-12);
+  }
+  QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput,
+                           ddfcam::gui::toGlyphPolyData(points, {{1, 0, 0}}, 1.0));
+  QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput,
+                           ddfcam::gui::toGlyphPolyData(points, directions, 0.0));
+  QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput, ddfcam::gui::toGlyphPolyData(
+                                                     {{0, 0, 0}}, {Eigen::Vector3d::Zero()}, 1.0));
 }
 
 QTEST_APPLESS_MAIN(AdaptersTest)

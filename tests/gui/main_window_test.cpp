@@ -1,155 +1,37 @@
 // SPDX-License-Identifier: MIT
-// The workbench window under Xvfb, checked the way a person would look at it.
+// The workbench window under Xvfb, checked the way a person would look at it: the start-up
+// part, the view, opening files through the menu (a job), bad files, screenshots, drops.
 #include "frame_checks.h"
+#include "workbench_fixture.h"
 
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/gui/app_setup.h>
-#include <ddfcam/gui/main_window.h>
-#include <ddfcam/gui/part_controller.h>
+#include <ddfcam/gui/document.h>
 #include <ddfcam/gui/part_scene.h>
+#include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/vtk_error_monitor.h>
 #include <ddfcam/gui/vtk_view.h>
+#include <ddfcam/planning/project.h>
 
 #include <QAction>
-#include <QDir>
 #include <QFile>
-#include <QScopeGuard>
-#include <QTemporaryDir>
+#include <QMimeData>
 #include <QtTest/QtTest>
 
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
 
-#include <memory>
+#include <cmath>
 
 using ddfcam::gui::Layer;
-using ddfcam::gui::MainWindow;
 using ddfcam::test::changedFraction;
 using ddfcam::test::dumpFrame;
 using ddfcam::test::frameStats;
 
-class MainWindowTest : public QObject {
-  Q_OBJECT
-
- public:
-  static void initMain() { ddfcam::gui::setDefaultSurfaceFormat(); }
-
- private slots:
-  void initTestCase();
-  void cleanupTestCase() { window_.reset(); }
-  void init() { errors_.clear(); }
-  void cleanup() { QCOMPARE(ddfcam::gui::VtkErrorMonitor::errorCount(), 0); }
-  void startsOnDemoPart();
-  void viewShowsThePart();
-  void dragMovesCamera();
-  void overlaysChangeTheImage_data();
-  void overlaysChangeTheImage();
-  void openMeshThroughMenu();
-  void corruptFileKeepsPreviousPart_data();
-  void corruptFileKeepsPreviousPart();
-  void saveScreenshotThroughMenu();
-
- private:
-  QImage frame() { return window_->view()->renderImage(); }
-  QAction* action(const char* name) { return window_->findChild<QAction*>(name); }
-  QColor background() const { return window_->view()->backgroundColor(); }
-
-  std::unique_ptr<MainWindow> window_;
-  QTemporaryDir tmp_;
-  QString nextOpenPath_;
-  QString nextScreenshotPath_;
-  QStringList errors_;
-};
-
-void MainWindowTest::initTestCase() {
-  ddfcam::gui::VtkErrorMonitor::install();
-  QVERIFY(tmp_.isValid());
-  ddfcam::gui::WorkbenchDialogs dialogs;
-  dialogs.openPath = [this] { return nextOpenPath_; };
-  dialogs.screenshotPath = [this] { return nextScreenshotPath_; };
-  dialogs.error = [this](const QString& title, const QString& message) {
-    errors_ << title + ": " + message;
-  };
-  window_ = std::make_unique<MainWindow>(dialogs);
-  window_->resize(900, 640);
-  window_->show();
-  QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
-}
-
-void MainWindowTest::startsOnDemoPart() {
-  const ddfcam::gui::PartDocument* doc = window_->controller().document();
-  QVERIFY(doc != nullptr);
-  QCOMPARE(QString::fromStdString(doc->name), QString("demo part"));
-  // The demo part's grid is documented: cellsX x cellsY quads, two triangles each, at m.
-  const ddfcam::ddf::DemoPartParams demo;
-  QCOMPARE(doc->ddf.faceCount(), 2 * demo.cellsX * demo.cellsY);
-  QCOMPARE(doc->ddf.resolution(), demo.m);
-  QVERIFY2(window_->statusText().contains("faces: 1,536"), qPrintable(window_->statusText()));
-  QVERIFY(window_->statusText().contains("m: 17"));
-  QVERIFY(window_->scene().cellCount(Layer::Surface) > 1000);
-}
-
-void MainWindowTest::viewShowsThePart() {
-  const QImage image = frame();
-  dumpFrame(image, "main_window_demo");
-  const auto stats = frameStats(image, background());
-  QVERIFY2(stats.centreForeground > 0.6, qPrintable(QString::number(stats.centreForeground)));
-  QVERIFY2(stats.borderBackground > 0.8, qPrintable(QString::number(stats.borderBackground)));
-  QVERIFY(stats.cornersBackground);
-}
-
-void MainWindowTest::dragMovesCamera() {
-  auto* view = window_->view();
-  vtkCamera* camera = view->renderer()->GetActiveCamera();
-  double p0[3], p1[3];
-  camera->GetPosition(p0);
-  const QImage before = frame();
-  const QPoint c = view->rect().center();
-  QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, c);
-  for (int i = 1; i <= 6; ++i) {
-    const QPointF p = c + QPoint(-12 * i, 5 * i);
-    QMouseEvent move(QEvent::MouseMove, p, view->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
-                     Qt::NoModifier);
-    QApplication::sendEvent(view, &move);
-  }
-  QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, c + QPoint(-72, 30));
-  camera->GetPosition(p1);
-  QVERIFY(std::hypot(p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]) > 1.0);
-  QVERIFY(changedFraction(before, frame()) > 0.02);
-  window_->findChild<QAction*>("actionFitView")->trigger();
-  QVERIFY(frameStats(frame(), background()).cornersBackground);
-}
-
-void MainWindowTest::overlaysChangeTheImage_data() {
-  QTest::addColumn<QString>("actionName");
-  QTest::addColumn<int>("layer");
-  QTest::newRow("support mesh") << "actionShowSupport" << static_cast<int>(Layer::Support);
-  QTest::newRow("stubbles") << "actionShowStubbles" << static_cast<int>(Layer::Stubbles);
-}
-
-void MainWindowTest::overlaysChangeTheImage() {
-  QFETCH(QString, actionName);
-  QFETCH(int, layer);
-  QAction* toggle = action(qPrintable(actionName));
-  QVERIFY(toggle && toggle->isCheckable() && !toggle->isChecked());
-  QVERIFY(window_->scene().cellCount(static_cast<Layer>(layer)) > 100);
-  const QImage off = frame();
-  toggle->trigger();
-  auto restore = qScopeGuard([toggle] { toggle->setChecked(false); });
-  QVERIFY(window_->scene().isVisible(static_cast<Layer>(layer)));
-  const QImage on = frame();
-  dumpFrame(on, "main_window_" + actionName);
-  QVERIFY2(changedFraction(off, on) > 0.01, qPrintable(QString::number(changedFraction(off, on))));
-  QVERIFY(frameStats(on, background()).cornersBackground);
-  toggle->trigger();
-  QVERIFY(!window_->scene().isVisible(static_cast<Layer>(layer)));
-  QVERIFY(changedFraction(off, frame()) < 0.001);
-}
-
 namespace {
 
-/// A 16 x 12 mm hill z = 2 exp(-((x-8)^2 + (y-6)^2) / 20) sampled on a 16 x 12 grid, as OFF text.
+/// A 16 x 12 mm hill z = 2 exp(-((x-8)^2 + (y-6)^2) / 20) on a grid of nx x ny quads, as OFF.
 QByteArray hillOff(int nx, int ny) {
   QByteArray text = "OFF\n";
   text += QByteArray::number((nx + 1) * (ny + 1)) + " " + QByteArray::number(2 * nx * ny) + " 0\n";
@@ -175,20 +57,130 @@ bool writeFile(const QString& path, const QByteArray& bytes) {
 
 }  // namespace
 
+class MainWindowTest : public QObject {
+  Q_OBJECT
+
+ public:
+  static void initMain() { ddfcam::gui::setDefaultSurfaceFormat(); }
+
+ private slots:
+  void initTestCase();
+  void cleanupTestCase() { f_.window.reset(); }
+  void init() { f_.script.errors.clear(); }
+  void cleanup() { QCOMPARE(ddfcam::gui::VtkErrorMonitor::errorCount(), 0); }
+  void startsOnDemoSession();
+  void viewShowsThePart();
+  void dragMovesCamera();
+  void overlaysChangeTheImage_data();
+  void overlaysChangeTheImage();
+  void openMeshThroughMenu();
+  void corruptFileKeepsDocument_data();
+  void corruptFileKeepsDocument();
+  void saveScreenshotAtChosenSize();
+  void dropOpensFile();
+
+ private:
+  QImage frame() { return f_.window->view()->renderImage(); }
+  QAction* action(const char* name) { return f_.window->findChild<QAction*>(name); }
+  QColor background() const { return f_.window->view()->backgroundColor(); }
+  const ddfcam::planning::Project& project() const { return f_.window->document().project(); }
+
+  ddfcam::test::WorkbenchFixture f_;
+};
+
+void MainWindowTest::initTestCase() {
+  ddfcam::gui::VtkErrorMonitor::install();
+  QVERIFY(f_.dir.isValid());
+  QVERIFY(f_.open());
+  QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
+}
+
+void MainWindowTest::startsOnDemoSession() {
+  QVERIFY(project().part.has_value());
+  QCOMPARE(QString::fromStdString(project().partName), QString("demo part"));
+  // The demo part's grid is documented: cellsX x cellsY quads, two triangles each, at m.
+  const ddfcam::ddf::DemoPartParams demo;
+  QCOMPARE(project().part->faceCount(), 2 * demo.cellsX * demo.cellsY);
+  QCOMPARE(project().part->resolution(), demo.m);
+  QVERIFY2(f_.window->statusText().contains("faces: 1,536"), qPrintable(f_.window->statusText()));
+  QVERIFY(f_.window->partView().scene().cellCount(Layer::Surface) > 1000);
+  // The demo session brings a tool and a path to simulate, and the path is drawn.
+  QCOMPARE(project().tools.size(), std::size_t{1});
+  QCOMPARE(project().paths.size(), std::size_t{1});
+  QVERIFY(f_.window->partView().scene().overlayCellCount("paths") >= 3);
+  QVERIFY(!f_.window->document().isModified());
+  QVERIFY(f_.window->windowTitle().startsWith("demo part"));
+}
+
+void MainWindowTest::viewShowsThePart() {
+  const QImage image = frame();
+  dumpFrame(image, "main_window_demo");
+  const auto stats = frameStats(image, background());
+  QVERIFY2(stats.centreForeground > 0.5, qPrintable(QString::number(stats.centreForeground)));
+  QVERIFY2(stats.borderBackground > 0.8, qPrintable(QString::number(stats.borderBackground)));
+  QVERIFY(stats.cornersBackground);
+}
+
+void MainWindowTest::dragMovesCamera() {
+  auto* view = f_.window->view();
+  vtkCamera* camera = view->renderer()->GetActiveCamera();
+  double p0[3], p1[3];
+  camera->GetPosition(p0);
+  const QImage before = frame();
+  const QPoint c = view->rect().center();
+  QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, c);
+  for (int i = 1; i <= 6; ++i) {
+    const QPointF p = c + QPoint(-12 * i, 5 * i);
+    QMouseEvent move(QEvent::MouseMove, p, view->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
+                     Qt::NoModifier);
+    QApplication::sendEvent(view, &move);
+  }
+  QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, c + QPoint(-72, 30));
+  camera->GetPosition(p1);
+  QVERIFY(std::hypot(p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]) > 1.0);
+  QVERIFY(changedFraction(before, frame()) > 0.05);
+  // Back to the standard view for the following checks.
+  action("actionViewIsometric")->trigger();
+}
+
+void MainWindowTest::overlaysChangeTheImage_data() {
+  QTest::addColumn<QString>("actionName");
+  QTest::newRow("support") << "actionShowSupport";
+  QTest::newRow("stubbles") << "actionShowStubbles";
+  QTest::newRow("vectors") << "actionShowVectors";
+  QTest::newRow("paths") << "actionShowPaths";
+}
+
+void MainWindowTest::overlaysChangeTheImage() {
+  QFETCH(QString, actionName);
+  QAction* toggle = action(qPrintable(actionName));
+  QVERIFY(toggle && toggle->isCheckable());
+  const QImage before = frame();
+  toggle->trigger();
+  const QImage after = frame();
+  dumpFrame(after, "main_window_" + actionName);
+  QVERIFY2(changedFraction(before, after) > 0.002,
+           qPrintable(QString::number(changedFraction(before, after))));
+  toggle->trigger();
+  QVERIFY(changedFraction(before, frame()) < 0.001);
+}
+
 void MainWindowTest::openMeshThroughMenu() {
-  const QString path = tmp_.filePath("hill.off");
+  const QString path = f_.dir.filePath("hill.off");
   QVERIFY(writeFile(path, hillOff(16, 12)));
   const QImage demoImage = frame();
-  nextOpenPath_ = path;
+  f_.script.openPath = path;
   action("actionOpen")->trigger();
-  QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join("\n")));
-  const ddfcam::gui::PartDocument* doc = window_->controller().document();
-  QCOMPARE(QString::fromStdString(doc->name), QString("hill.off"));
-  QVERIFY(window_->statusText().startsWith("hill.off"));
+  QVERIFY(f_.window->waitForJobs());
+  QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
+  QCOMPARE(QString::fromStdString(project().partName), QString("hill.off"));
+  QVERIFY(f_.window->statusText().startsWith("hill.off"));
   // A converted mesh is the support itself: the hill's triangles and its 16 x 12 mm extent.
-  QCOMPARE(doc->ddf.faceCount(), 2 * 16 * 12);
-  QVERIFY(doc->load.converted);
-  const auto box = ddfcam::ddf::extractSupportMesh(doc->ddf).bounds();
+  QCOMPARE(project().part->faceCount(), 2 * 16 * 12);
+  QVERIFY(project().designMesh.has_value());
+  QCOMPARE(project().designMesh->triangles.size(), std::size_t{2 * 16 * 12});
+  QCOMPARE(project().states.size(), std::size_t{1});
+  const auto box = ddfcam::ddf::extractSupportMesh(*project().part).bounds();
   QVERIFY(box[0].isApprox(Eigen::Vector3d(0, 0, 2.0 * std::exp(-(64.0 + 36.0) / 20.0)), 1e-9));
   QCOMPARE(box[1].x(), 16.0);
   QCOMPARE(box[1].y(), 12.0);
@@ -196,12 +188,12 @@ void MainWindowTest::openMeshThroughMenu() {
   const QImage image = frame();
   dumpFrame(image, "main_window_hill");
   const auto stats = frameStats(image, background());
-  QVERIFY2(stats.centreForeground > 0.5, qPrintable(QString::number(stats.centreForeground)));
+  QVERIFY2(stats.centreForeground > 0.4, qPrintable(QString::number(stats.centreForeground)));
   QVERIFY(stats.cornersBackground);
   QVERIFY(changedFraction(demoImage, image) > 0.05);
 }
 
-void MainWindowTest::corruptFileKeepsPreviousPart_data() {
+void MainWindowTest::corruptFileKeepsDocument_data() {
   QTest::addColumn<QString>("fileName");
   QTest::addColumn<QByteArray>("content");
   QTest::newRow("ddf garbage") << "broken.ddf" << QByteArray("DDFCAM\x1a\n garbage, not a field");
@@ -209,42 +201,68 @@ void MainWindowTest::corruptFileKeepsPreviousPart_data() {
                                  << QByteArray("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
   QTest::newRow("stl truncated") << "broken.stl"
                                  << QByteArray("solid s\n facet normal 0 0 1\n  outer loop\n");
+  QTest::newRow("project garbage") << "broken.ddfproj" << QByteArray("not a project at all");
 }
 
-void MainWindowTest::corruptFileKeepsPreviousPart() {
+void MainWindowTest::corruptFileKeepsDocument() {
   QFETCH(QString, fileName);
   QFETCH(QByteArray, content);
-  const QString path = tmp_.filePath(fileName);
+  const QString path = f_.dir.filePath(fileName);
   QVERIFY(writeFile(path, content));
-  const ddfcam::gui::PartDocument* before = window_->controller().document();
-  QVERIFY(before != nullptr);
-  const std::string nameBefore = before->name;
-  const QString statusBefore = window_->statusText();
+  const ddfcam::planning::Project before = project();
+  const QString statusBefore = f_.window->statusText();
   const QImage imageBefore = frame();
 
-  nextOpenPath_ = path;
+  f_.script.openPath = path;
   action("actionOpen")->trigger();
-  QCOMPARE(errors_.size(), 1);
-  QVERIFY2(errors_.front().contains(fileName), qPrintable(errors_.front()));
-  QCOMPARE(window_->controller().document(), before);
-  QCOMPARE(window_->controller().document()->name, nameBefore);
-  QCOMPARE(window_->statusText(), statusBefore);
+  QVERIFY(f_.window->waitForJobs());
+  QCOMPARE(f_.script.errors.size(), 1);
+  QVERIFY2(f_.script.errors.front().contains(fileName), qPrintable(f_.script.errors.front()));
+  QVERIFY(ddfcam::planning::projectsEqual(project(), before));
+  QCOMPARE(f_.window->statusText(), statusBefore);
   QVERIFY(changedFraction(imageBefore, frame()) < 0.001);
 }
 
-void MainWindowTest::saveScreenshotThroughMenu() {
-  nextScreenshotPath_ = tmp_.filePath("shot.png");
+void MainWindowTest::saveScreenshotAtChosenSize() {
+  f_.script.screenshot =
+      ddfcam::gui::ScreenshotRequest{f_.dir.filePath("shot.png"), QSize(640, 400)};
   action("actionSaveScreenshot")->trigger();
-  QVERIFY2(errors_.isEmpty(), qPrintable(errors_.join("\n")));
-  const QImage saved(nextScreenshotPath_);
+  QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
+  const QImage saved(f_.script.screenshot->path);
   QVERIFY(!saved.isNull());
-  const double dpr = window_->view()->devicePixelRatioF();
-  QCOMPARE(saved.width(), qRound(window_->view()->width() * dpr));
-  QVERIFY(frameStats(saved, background()).cornersBackground);
+  QCOMPARE(saved.size(), QSize(640, 400));
+  const auto stats = frameStats(saved, background());
+  QVERIFY(stats.cornersBackground);
+  QVERIFY(stats.centreForeground > 0.3);
   // A path that cannot be written is reported, not silently ignored.
-  nextScreenshotPath_ = tmp_.filePath("no/such/folder/shot.png");
+  f_.script.screenshot->path = f_.dir.filePath("no/such/folder/shot.png");
   action("actionSaveScreenshot")->trigger();
-  QCOMPARE(errors_.size(), 1);
+  QCOMPARE(f_.script.errors.size(), 1);
+}
+
+void MainWindowTest::dropOpensFile() {
+  const QString path = f_.dir.filePath("dropped.off");
+  QVERIFY(writeFile(path, hillOff(6, 4)));
+  QMimeData mime;
+  mime.setUrls({QUrl::fromLocalFile(path)});
+  const QPoint at = f_.window->rect().center();
+  QDragEnterEvent enter(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+  enter.ignore();
+  QApplication::sendEvent(f_.window.get(), &enter);
+  QVERIFY(enter.isAccepted());
+  QDropEvent drop(QPointF(at), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+  QApplication::sendEvent(f_.window.get(), &drop);
+  QVERIFY(f_.window->waitForJobs());
+  QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
+  QCOMPARE(QString::fromStdString(project().partName), QString("dropped.off"));
+  QCOMPARE(project().part->faceCount(), 2 * 6 * 4);
+  // Files the workbench cannot open are refused at the door.
+  QMimeData text;
+  text.setUrls({QUrl::fromLocalFile(f_.dir.filePath("notes.txt"))});
+  QDragEnterEvent refused(at, Qt::CopyAction, &text, Qt::LeftButton, Qt::NoModifier);
+  refused.ignore();
+  QApplication::sendEvent(f_.window.get(), &refused);
+  QVERIFY(!refused.isAccepted());
 }
 
 QTEST_MAIN(MainWindowTest)

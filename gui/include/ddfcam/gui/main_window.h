@@ -1,76 +1,118 @@
 // SPDX-License-Identifier: MIT
-// ddfcam gui: the workbench main window (menus, status bar); delegates all work.
+// ddfcam gui: the workbench main window: 3D view, docks, menus; delegates all work.
 #pragma once
 
-#include <ddfcam/gui/user_action.h>
+#include <ddfcam/gui/project_actions.h>
 
 #include <QMainWindow>
 #include <QString>
 
-#include <functional>
 #include <memory>
+#include <vector>
 
 class QAction;
 class QLabel;
 class QMenu;
+class QSettings;
 
 namespace ddfcam::gui {
 
-class PartController;
-class PartScene;
+class CameraToolBar;
+class ConsoleDock;
+class Document;
+class JobProgressWidget;
+class JobRunner;
+class Panel;
+class PartView;
+class PlotDock;
+class RecentFiles;
+class RecoveryManager;
 class VtkView;
+struct Workbench;
 
-/// @brief The interactive parts of the window that tests replace: file dialogs and the
-/// error message box.
-struct WorkbenchDialogs {
-  /// Asks for a part to open; an empty string means the user cancelled.
-  std::function<QString()> openPath;
-  /// Asks where to save a screenshot; an empty string means the user cancelled.
-  std::function<QString()> screenshotPath;
-  /// Shows an error of a user action.
-  ErrorReporter error;
+/// @brief Start-up options of the workbench window.
+struct WorkbenchOptions {
+  /// Start with the built-in demo part (a load job started by the constructor). Default true.
+  bool openDemoAtStart = true;
+  /// Directory of autosave/recovery files; empty: the per-user application data folder.
+  QString recoveryDirectory;
+  /// Autosave interval, ms. Default 120,000 (2 minutes).
+  int autosaveIntervalMs = 120'000;
+  /// Settings store (recent files); null: the application's default QSettings.
+  QSettings* settings = nullptr;
 };
 
-/// @brief Workbench window: a VtkView in the centre, File and View menus, a status line.
-/// Starts on the built-in demo part. Every menu action runs through runUserAction(), so a
-/// library error is shown once and leaves the previous state in place.
+/// @brief Workbench window: a VtkView in the centre with camera buttons, workflow panels in
+/// docks (registerPanel), a plot dock and a console, File/Edit/View menus and a status bar
+/// with job progress and cancel. Every menu action runs through runUserAction or a job, so a
+/// library error is shown once and leaves the document as it was.
 class MainWindow : public QMainWindow {
   Q_OBJECT
 
  public:
-  /// @param dialogs file dialogs and error reporter; empty members get the defaults
-  /// (QFileDialog, QMessageBox).
-  /// @param openDemoAtStart show the demo part right away (else the window starts empty).
-  explicit MainWindow(WorkbenchDialogs dialogs = {}, bool openDemoAtStart = true,
+  explicit MainWindow(WorkbenchDialogs dialogs = {}, WorkbenchOptions options = {},
                       QWidget* parent = nullptr);
   ~MainWindow() override;
 
-  /// @brief Opens @p path (.ddf or a mesh) as the File > Open action does after its dialog.
-  /// @return false if loading failed (the error was reported, the previous part stays).
+  /// @brief Puts @p panel in a dock (its area), adds its toggle to View > Panels and its
+  /// actions to its menu. Takes ownership.
+  void registerPanel(Panel* panel);
+
+  /// @brief Opens @p path (project, .ddf or mesh) as File > Open does after its dialog.
+  /// @return true if the load job started (it reports its own errors).
   bool openPath(const QString& path);
-  /// @brief Shows the built-in demo part (File > Open demo part).
+  /// @brief Starts loading the demo part (File > Open demo part).
   bool openDemo();
-  /// @brief Writes the rendered 3D view to @p path (File > Save screenshot after its dialog).
-  bool saveScreenshot(const QString& path);
+  /// @brief Writes the 3D view to @p path at @p size (device pixels; invalid: view size).
+  bool saveScreenshot(const QString& path, QSize size = {});
+  /// @brief Processes events until no job runs (tests, batch mode). @return false on timeout.
+  bool waitForJobs(int timeoutMs = 60'000);
 
   VtkView* view() const { return view_; }
-  const PartController& controller() const { return *controller_; }
-  const PartScene& scene() const { return *scene_; }
+  Document& document() const { return *document_; }
+  PartView& partView() const { return *partView_; }
+  JobRunner& jobs() const { return *jobs_; }
+  PlotDock& plots() const { return *plots_; }
+  ConsoleDock& console() const { return *console_; }
+  ProjectActions& projectActions() const { return *projectActions_; }
+  RecoveryManager& recovery() const { return *recovery_; }
+  Workbench& workbench() const { return *workbench_; }
   /// @brief Text of the permanent status-bar label.
   QString statusText() const;
 
- private:
-  void createFileMenu();
-  void createViewMenu();
-  QAction* addLayerToggle(QMenu* menu, const QString& text, const QString& name, int layer,
-                          bool checked);
-  void afterPartChanged();
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
 
-  VtkView* view_ = nullptr;
-  QLabel* status_ = nullptr;
-  std::unique_ptr<PartScene> scene_;
-  std::unique_ptr<PartController> controller_;
+ private:
+  void createServices(const WorkbenchOptions& options);
+  void createDocks();
+  void createFileMenu();
+  void createEditMenu();
+  void createViewMenu();
+  void registerDefaultPanels();
+  void updateTitle();
+  void updateStatus();
+  QMenu* menuNamed(const QString& title);
+
   WorkbenchDialogs dialogs_;
+  VtkView* view_ = nullptr;
+  CameraToolBar* cameraBar_ = nullptr;
+  QLabel* status_ = nullptr;
+  JobProgressWidget* jobProgress_ = nullptr;
+  PlotDock* plots_ = nullptr;
+  ConsoleDock* console_ = nullptr;
+  QMenu* panelsMenu_ = nullptr;
+  QMenu* recentMenu_ = nullptr;
+  std::unique_ptr<Document> document_;
+  std::unique_ptr<JobRunner> jobs_;
+  std::unique_ptr<PartView> partView_;
+  std::unique_ptr<RecentFiles> recent_;
+  std::unique_ptr<RecoveryManager> recovery_;
+  std::unique_ptr<ProjectActions> projectActions_;
+  std::unique_ptr<Workbench> workbench_;
+  std::vector<Panel*> panels_;
 };
 
 }  // namespace ddfcam::gui

@@ -3,9 +3,11 @@
 #pragma once
 
 #include <ddfcam/ddf/displacement_field.h>
+#include <ddfcam/ddf/surface_sampling.h>
 #include <ddfcam/gui/part_scene.h>
 
 #include <cstddef>
+#include <vector>
 
 namespace ddfcam::gui {
 
@@ -29,11 +31,20 @@ struct DisplayParams {
 
 /// @brief Scene geometry of one DDF and how it was made.
 struct PartGeometry {
-  SceneGeometry scene;               ///< polydata of every layer
+  /// Polydata of every layer. The surface carries point data "vertex" (mesh vertex of each
+  /// point) and cell data "face" (support face of each triangle, see adapters/poly_data.h).
+  SceneGeometry scene;
   std::size_t surfaceTriangles = 0;  ///< triangles of the surface layer
-  bool adaptiveSurface = false;      ///< true: ddf::triangulateAdaptive, false: raster mesh
-  double adaptiveEpsMm = 0.0;        ///< eps of the adaptive triangulation, mm (0 for raster)
-  int stubbleStride = 1;             ///< lattice stride of the stubble layer
+  /// #T support face of each surface triangle (cell c of scene.surface lies in face
+  /// surfaceTriangleFace[c]).
+  std::vector<int> surfaceTriangleFace;
+  /// Where each vertex of the surface mesh lies on the DDF (#V = the surface mesh's vertex
+  /// count, indexed like the "vertex" point array): turns per-raster-point fields into
+  /// per-vertex values with ddf::valuesAtSamples() for PartScene::setSurfaceField().
+  ddf::SurfaceSamples surfaceSamples;
+  bool adaptiveSurface = false;  ///< true: ddf::triangulateAdaptive, false: raster mesh
+  double adaptiveEpsMm = 0.0;    ///< eps of the adaptive triangulation, mm (0 for raster)
+  int stubbleStride = 1;         ///< lattice stride of the stubble layer
 };
 
 /// @brief Surface (raster mesh or adaptive triangulation, see DisplayParams), support

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+// ddfcam gui: the Fields panel: compute fields, choose the shown one, its colour map and range.
+#pragma once
+
+#include <ddfcam/gui/workbench.h>
+#include <ddfcam/planning/project.h>
+
+#include <functional>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QListWidget;
+class QPushButton;
+
+namespace ddfcam::gui {
+
+/// @brief Fields the panel can compute (each through the core, as a job).
+enum class FieldKind {
+  Height,           ///< planning::heightField
+  HeightMm,         ///< planning::heightMmField
+  MaterialRemoved,  ///< planning::materialRemovedField against the first state ("stock")
+  Deviation,        ///< planning::deviationField against the design mesh
+};
+
+/// @brief Lists the document's fields; selecting one colours the surface by it (PartView) and
+/// shows its histogram over the colour range in the plot dock. Computes the built-in fields as
+/// jobs whose result is an undoable AddFieldCommand; removes fields (undoable).
+class FieldsPanel : public Panel {
+  Q_OBJECT
+
+ public:
+  explicit FieldsPanel(Workbench& workbench, QWidget* parent = nullptr);
+  QString title() const override { return tr("Fields"); }
+  QString id() const override { return "fields"; }
+  QString menuTitle() const override { return tr("F&ields"); }
+  QList<QAction*> menuActions() const override { return actions_; }
+
+  /// @brief Starts computing @p kind as a job (the Compute menu). @return true if started.
+  bool compute(FieldKind kind);
+  /// @brief Number of bins of the histogram. Default 64.
+  static constexpr int kHistogramBins = 64;
+
+ private:
+  void buildControls();
+  void refreshList();
+  void refreshDisplayControls();
+  void updateHistogram();
+  void onSelectionChanged();
+  void applyRangeFromControls();
+
+  QList<QAction*> actions_;
+  QListWidget* list_ = nullptr;
+  QPushButton* remove_ = nullptr;
+  QComboBox* colourMap_ = nullptr;
+  QCheckBox* autoRange_ = nullptr;
+  QDoubleSpinBox* min_ = nullptr;
+  QDoubleSpinBox* max_ = nullptr;
+  bool updating_ = false;
+};
+
+}  // namespace ddfcam::gui

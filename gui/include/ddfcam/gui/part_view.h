@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: MIT
+// ddfcam gui: keeps the 3D scene in step with the document: part geometry, field colours,
+// path and tool overlays, and turns clicks into surface picks.
+#pragma once
+
+#include <ddfcam/ddf/surface_sampling.h>
+#include <ddfcam/gui/adapters/colour_map.h>
+#include <ddfcam/gui/document.h>
+#include <ddfcam/gui/part_geometry.h>
+#include <ddfcam/planning/tool.h>
+
+#include <Eigen/Geometry>
+#include <QObject>
+#include <QPointF>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace ddfcam::gui {
+
+class PartScene;
+class VtkView;
+
+/// @brief How the shown field is coloured.
+struct FieldDisplay {
+  std::string field;                   ///< name of the shown field; empty: plain surface
+  ColourMap map = ColourMap::Viridis;  ///< colour map
+  bool autoRange = true;               ///< range follows the data (symmetric if signed)
+  double lo = 0.0;                     ///< value at the low end of the map (field unit)
+  double hi = 1.0;                     ///< value at the high end of the map (field unit)
+};
+
+/// @brief A picked point of the part surface.
+struct PickResult {
+  ddf::SurfaceLocation location;     ///< support face, barycentric coords, height, point
+  std::optional<double> fieldValue;  ///< shown field at the point, if a field is shown
+  std::string fieldName;             ///< name of the shown field (empty if none)
+  std::string fieldUnit;             ///< its unit
+};
+
+/// @brief Observes a Document and shows its part in a VtkView through a PartScene: rebuilds
+/// the surface when the part or its heights change, colours it by the chosen field (scalar bar
+/// with units), draws the tool paths and an optional tool, and maps view clicks to PickResult
+/// through the core's ddf::locateOnFace. Owns the scene.
+class PartView : public QObject {
+  Q_OBJECT
+
+ public:
+  PartView(Document& document, VtkView& view, DisplayParams params = {}, QObject* parent = nullptr);
+  ~PartView() override;
+
+  PartScene& scene() const { return *scene_; }
+  VtkView& view() const { return view_; }
+  /// @brief Geometry of the shown part, or null if the document has no part.
+  const PartGeometry* geometry() const { return geometry_.get(); }
+  /// @brief One-line summary for the status bar: name, faces, m, points, surface triangles.
+  std::string summary() const;
+
+  /// @brief Colours the surface by the field named @p name (empty: none), auto range.
+  /// @throws InvalidInput if the document has no such field.
+  void showField(const std::string& name);
+  /// @brief Current field display settings.
+  const FieldDisplay& fieldDisplay() const { return display_; }
+  /// @brief The shown field's values, or null.
+  const planning::ScalarField* shownField() const;
+  /// @brief Changes the colour map of the shown field.
+  void setColourMap(ColourMap map);
+  /// @brief Fixes the colour range to [lo, hi] (field unit).
+  /// @throws InvalidInput unless lo < hi, both finite.
+  void setRange(double lo, double hi);
+  /// @brief Lets the colour range follow the data again.
+  void setAutoRange();
+
+  /// @brief Shows @p tool at @p pose (part frame) as a translucent overlay; nullopt hides it.
+  void setToolOverlay(const std::optional<std::pair<planning::Tool, Eigen::Isometry3d>>& tool);
+  /// @brief Shows or hides the displacement vectors of the support vertices as arrows.
+  void setVectorGlyphsVisible(bool visible);
+  /// @brief Shows or hides the tool-path overlay.
+  void setPathsVisible(bool visible);
+
+  /// @brief The surface point under widget position @p pos, or nullopt if the surface is not
+  /// hit there. Also emits picked().
+  std::optional<PickResult> pick(QPointF pos);
+
+ signals:
+  /// @brief The surface geometry was rebuilt; @p partReplaced if it is a different part.
+  void geometryChanged(bool partReplaced);
+  /// @brief The shown field, its values, colour map or range changed.
+  void fieldDisplayChanged();
+  /// @brief A pick succeeded.
+  void picked(const ddfcam::gui::PickResult& result);
+
+ private:
+  void onDocumentChanged(Changes what);
+  void rebuildGeometry(bool partReplaced);
+  void applyFieldDisplay();
+  void rebuildPathOverlay();
+  void rebuildGlyphOverlay();
+
+  Document& document_;
+  VtkView& view_;
+  DisplayParams params_;
+  std::unique_ptr<PartScene> scene_;
+  std::unique_ptr<PartGeometry> geometry_;
+  FieldDisplay display_;
+  bool pathsVisible_ = true;
+  bool glyphsVisible_ = false;
+};
+
+}  // namespace ddfcam::gui
+
+Q_DECLARE_METATYPE(ddfcam::gui::PickResult)

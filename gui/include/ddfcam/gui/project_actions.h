@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: MIT
+// ddfcam gui: the File menu's work: new, open (parts and projects, as jobs), save, recent files,
+// the unsaved-changes prompt and crash recovery.
+#pragma once
+
+#include <ddfcam/gui/user_action.h>
+
+#include <QObject>
+#include <QSize>
+#include <QString>
+#include <QStringList>
+
+#include <functional>
+#include <optional>
+
+namespace ddfcam::gui {
+
+class Document;
+class JobRunner;
+class RecentFiles;
+class RecoveryManager;
+
+/// @brief Answer to "the project has unsaved changes".
+enum class UnsavedChoice { Save, Discard, Cancel };
+
+/// @brief Where and how large a screenshot should be written.
+struct ScreenshotRequest {
+  QString path;  ///< PNG file
+  QSize size;    ///< device pixels; an invalid size means the view's current size
+};
+
+/// @brief The interactive parts of the workbench that tests replace. Empty members get the
+/// defaults (file dialogs, message boxes).
+struct WorkbenchDialogs {
+  /// Asks for a part or project to open; an empty string means the user cancelled.
+  std::function<QString()> openPath;
+  /// Asks where to save the project; an empty string means the user cancelled.
+  std::function<QString()> saveProjectPath;
+  /// Asks for the screenshot file and size; nullopt means the user cancelled.
+  std::function<std::optional<ScreenshotRequest>()> screenshot;
+  /// Asks what to do with unsaved changes before they would be lost.
+  std::function<UnsavedChoice()> unsavedChanges;
+  /// Offers recovery files of sessions that ended abnormally (one line per file); returns the
+  /// index of the one to recover or -1.
+  std::function<int(const QStringList& entries)> offerRecovery;
+  /// Shows an error of a user action.
+  ErrorReporter error;
+};
+
+/// @brief File operations on a Document. Loading runs as a job (a big mesh converts for a
+/// while); the document is replaced only when loading succeeded, so a failed or cancelled open
+/// keeps the current project.
+class ProjectActions : public QObject {
+  Q_OBJECT
+
+ public:
+  ProjectActions(Document& document, JobRunner& jobs, RecentFiles& recent,
+                 const WorkbenchDialogs& dialogs, QObject* parent = nullptr);
+
+  /// @brief File suffix of project files, "ddfproj".
+  static QString projectSuffix();
+  /// @brief True if @p path names a file the workbench can open (project, .ddf or mesh).
+  static bool canOpen(const QString& path);
+
+  /// @brief Starts opening @p path: a project replaces the document, a .ddf or mesh starts a
+  /// new project on it (the mesh also becomes the design mesh). Asks about unsaved changes
+  /// first. @return true if the load job started.
+  bool openPath(const QString& path);
+  /// @brief Starts a new project on the built-in demo part (a job). @return true if started.
+  bool openDemo();
+  /// @brief Saves to the document's file, or asks for one. @return true if saved.
+  bool save();
+  /// @brief Saves to @p path (suffix added if missing) and makes it the document's file.
+  /// @return true if saved; errors are reported.
+  bool saveAs(const QString& path);
+  /// @brief Asks about unsaved changes and saves if wanted.
+  /// @return true if the caller may go on (saved, discarded or nothing to save).
+  bool maybeSave();
+  /// @brief Looks for recovery files in @p recovery's directory and offers them; recovers the
+  /// chosen one into the document (marked modified). @return true if a project was recovered.
+  bool offerRecovery(RecoveryManager& recovery);
+
+ signals:
+  /// @brief A project or part was loaded into the document from @p path.
+  void opened(const QString& path);
+
+ private:
+  bool startLoad(const QString& title, const QString& path,
+                 std::function<void(const QString&)> onLoaded);
+
+  Document& document_;
+  JobRunner& jobs_;
+  RecentFiles& recent_;
+  const WorkbenchDialogs& dialogs_;
+};
+
+}  // namespace ddfcam::gui

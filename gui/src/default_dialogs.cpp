@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+// ddfcam gui: interactive defaults of WorkbenchDialogs.
+#include <ddfcam/gui/default_dialogs.h>
+
+#include <QFileDialog>
+#include <QInputDialog>
+#include <QMessageBox>
+#include <QPointer>
+#include <QRegularExpression>
+
+namespace ddfcam::gui {
+
+namespace {
+
+std::function<QString()> openDialog(QPointer<QWidget> parent) {
+  return [parent] {
+    return QFileDialog::getOpenFileName(
+        parent, QObject::tr("Open project or part"), QString(),
+        QObject::tr("Projects and parts (*.ddfproj *.ddf *.stl *.obj *.ply *.off);;"
+                    "Projects (*.ddfproj);;DDF (*.ddf);;Meshes (*.stl *.obj *.ply *.off);;"
+                    "All files (*)"));
+  };
+}
+
+std::function<std::optional<ScreenshotRequest>()> screenshotDialog(QPointer<QWidget> parent) {
+  return [parent]() -> std::optional<ScreenshotRequest> {
+    const QString path = QFileDialog::getSaveFileName(
+        parent, QObject::tr("Save screenshot"), "ddfcam.png", QObject::tr("PNG images (*.png)"));
+    if (path.isEmpty()) return std::nullopt;
+    bool ok = false;
+    const QString size = QInputDialog::getText(
+        parent, QObject::tr("Screenshot size"),
+        QObject::tr("Size in pixels (width x height), empty for the view's size:"),
+        QLineEdit::Normal, "1920x1080", &ok);
+    if (!ok) return std::nullopt;
+    ScreenshotRequest request{path, QSize()};
+    const auto match = QRegularExpression(R"(^\s*(\d+)\s*[xX*]\s*(\d+)\s*$)").match(size);
+    if (match.hasMatch())
+      request.size = QSize(match.captured(1).toInt(), match.captured(2).toInt());
+    return request;
+  };
+}
+
+std::function<UnsavedChoice()> unsavedDialog(QPointer<QWidget> parent) {
+  return [parent] {
+    const auto answer = QMessageBox::warning(
+        parent, QObject::tr("Unsaved changes"),
+        QObject::tr("The project has unsaved changes. Save them first?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save) return UnsavedChoice::Save;
+    if (answer == QMessageBox::Discard) return UnsavedChoice::Discard;
+    return UnsavedChoice::Cancel;
+  };
+}
+
+std::function<int(const QStringList&)> recoveryDialog(QPointer<QWidget> parent) {
+  return [parent](const QStringList& entries) {
+    bool ok = false;
+    const QString chosen = QInputDialog::getItem(
+        parent, QObject::tr("Recover work"),
+        QObject::tr("A previous session ended without saving. Recover its autosaved project?"),
+        entries, 0, false, &ok);
+    return ok ? static_cast<int>(entries.indexOf(chosen)) : -1;
+  };
+}
+
+}  // namespace
+
+WorkbenchDialogs withDefaultDialogs(WorkbenchDialogs d, QWidget* parent) {
+  QPointer<QWidget> guarded(parent);
+  if (!d.openPath) d.openPath = openDialog(guarded);
+  if (!d.saveProjectPath)
+    d.saveProjectPath = [guarded] {
+      return QFileDialog::getSaveFileName(guarded, QObject::tr("Save project"), "project.ddfproj",
+                                          QObject::tr("ddfcam projects (*.ddfproj)"));
+    };
+  if (!d.screenshot) d.screenshot = screenshotDialog(guarded);
+  if (!d.unsavedChanges) d.unsavedChanges = unsavedDialog(guarded);
+  if (!d.offerRecovery) d.offerRecovery = recoveryDialog(guarded);
+  if (!d.error) d.error = messageBoxReporter(parent);
+  return d;
+}
+
+}  // namespace ddfcam::gui

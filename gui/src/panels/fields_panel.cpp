@@ -1,0 +1,246 @@
+// SPDX-License-Identifier: MIT
+// ddfcam gui: FieldsPanel.
+#include <ddfcam/gui/panels/fields_panel.h>
+
+#include <ddfcam/ddf/surface_sampling.h>
+#include <ddfcam/error.h>
+#include <ddfcam/gui/document.h>
+#include <ddfcam/gui/document_command.h>
+#include <ddfcam/gui/job_runner.h>
+#include <ddfcam/gui/part_view.h>
+#include <ddfcam/gui/plot_dock.h>
+#include <ddfcam/planning/builtin_fields.h>
+#include <ddfcam/planning/field_statistics.h>
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QListWidget>
+#include <QMenu>
+#include <QPushButton>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <memory>
+
+namespace ddfcam::gui {
+
+namespace {
+
+/// What a field job needs, copied on the UI thread: jobs never read the live document.
+struct FieldInputs {
+  ddf::DisplacementField part;
+  std::vector<float> reference;
+  std::optional<ddf::TriangleMesh> design;
+};
+
+planning::ScalarField computeField(FieldKind kind, const FieldInputs& in,
+                                   const ProgressCallback& progress) {
+  switch (kind) {
+    case FieldKind::Height:
+      return planning::heightField(in.part);
+    case FieldKind::HeightMm:
+      return planning::heightMmField(in.part);
+    case FieldKind::MaterialRemoved:
+      return planning::materialRemovedField(in.part, in.reference);
+    case FieldKind::Deviation:
+      return planning::deviationField(in.part, *in.design, progress);
+  }
+  throw InvalidInput("unknown field kind");
+}
+
+QString kindTitle(FieldKind kind) {
+  switch (kind) {
+    case FieldKind::Height:
+      return QObject::tr("Height h (vector lengths)");
+    case FieldKind::HeightMm:
+      return QObject::tr("Height above support (mm)");
+    case FieldKind::MaterialRemoved:
+      return QObject::tr("Material removed since stock (mm)");
+    case FieldKind::Deviation:
+      return QObject::tr("Deviation from design mesh (mm)");
+  }
+  return {};
+}
+
+}  // namespace
+
+FieldsPanel::FieldsPanel(Workbench& workbench, QWidget* parent) : Panel(workbench, parent) {
+  for (FieldKind kind :
+       {FieldKind::Height, FieldKind::HeightMm, FieldKind::MaterialRemoved, FieldKind::Deviation}) {
+    auto* action = new QAction(tr("Compute %1").arg(kindTitle(kind)), this);
+    action->setObjectName(QString("actionComputeField%1").arg(static_cast<int>(kind)));
+    connect(action, &QAction::triggered, this, [this, kind] { compute(kind); });
+    actions_ << action;
+  }
+  buildControls();
+  connect(&workbench.document, &Document::changed, this, [this](Changes what) {
+    if (what & (Change::Fields | Change::Part)) refreshList();
+  });
+  connect(&workbench.partView, &PartView::fieldDisplayChanged, this, [this] {
+    refreshDisplayControls();
+    updateHistogram();
+  });
+  refreshList();
+  refreshDisplayControls();
+}
+
+void FieldsPanel::buildControls() {
+  list_ = new QListWidget(this);
+  list_->setObjectName("fieldList");
+  connect(list_, &QListWidget::currentRowChanged, this, [this] { onSelectionChanged(); });
+  auto* computeButton = new QToolButton(this);
+  computeButton->setObjectName("computeFieldButton");
+  computeButton->setText(tr("Compute"));
+  computeButton->setPopupMode(QToolButton::InstantPopup);
+  auto* menu = new QMenu(computeButton);
+  menu->addActions(actions_);
+  computeButton->setMenu(menu);
+  remove_ = new QPushButton(tr("Remove"), this);
+  remove_->setObjectName("removeFieldButton");
+  connect(remove_, &QPushButton::clicked, this, [this] {
+    const int index = list_->currentRow() - 1;
+    runUserAction(workbench().reportError, tr("Remove field"), [&] {
+      workbench().document.push(std::make_unique<RemoveFieldCommand>(workbench().document, index));
+    });
+  });
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(computeButton);
+  buttons->addWidget(remove_);
+  buttons->addStretch(1);
+
+  colourMap_ = new QComboBox(this);
+  colourMap_->setObjectName("colourMapCombo");
+  for (ColourMap map : allColourMaps())
+    colourMap_->addItem(QString::fromStdString(colourMapName(map)), static_cast<int>(map));
+  connect(colourMap_, &QComboBox::currentIndexChanged, this, [this] {
+    if (!updating_)
+      workbench().partView.setColourMap(static_cast<ColourMap>(colourMap_->currentData().toInt()));
+  });
+  autoRange_ = new QCheckBox(tr("Automatic range"), this);
+  autoRange_->setObjectName("autoRangeCheck");
+  connect(autoRange_, &QCheckBox::toggled, this, [this](bool on) {
+    if (updating_) return;
+    if (on)
+      workbench().partView.setAutoRange();
+    else
+      applyRangeFromControls();
+  });
+  min_ = new QDoubleSpinBox(this);
+  max_ = new QDoubleSpinBox(this);
+  min_->setObjectName("rangeMin");
+  max_->setObjectName("rangeMax");
+  for (QDoubleSpinBox* box : {min_, max_}) {
+    box->setRange(-1e9, 1e9);
+    box->setDecimals(5);
+    box->setKeyboardTracking(false);
+    connect(box, &QDoubleSpinBox::valueChanged, this, [this] {
+      if (!updating_) applyRangeFromControls();
+    });
+  }
+  auto* form = new QFormLayout;
+  form->addRow(tr("Colour map"), colourMap_);
+  form->addRow(autoRange_);
+  form->addRow(tr("Minimum"), min_);
+  form->addRow(tr("Maximum"), max_);
+  auto* layout = new QVBoxLayout(this);
+  layout->addWidget(list_, 1);
+  layout->addLayout(buttons);
+  layout->addLayout(form);
+}
+
+bool FieldsPanel::compute(FieldKind kind) {
+  const planning::Project& p = workbench().document.project();
+  const QString title = tr("Compute %1").arg(kindTitle(kind));
+  bool started = false;
+  runUserAction(workbench().reportError, title, [&] {
+    if (!p.part) throw InvalidInput("there is no part to compute a field on");
+    if (kind == FieldKind::MaterialRemoved && p.states.empty())
+      throw InvalidInput("material removed needs a stock state; the project has no states");
+    if (kind == FieldKind::Deviation && !p.designMesh)
+      throw InvalidInput("the project has no design mesh to compare with (open a mesh file)");
+    auto in = std::make_shared<FieldInputs>(FieldInputs{
+        *p.part, p.states.empty() ? std::vector<float>{} : p.states.front().heights, p.designMesh});
+    Workbench* wb = &workbench();
+    started = wb->jobs.start(title, [in, kind, wb](const ProgressCallback& progress) {
+      auto field = std::make_shared<planning::ScalarField>(computeField(kind, *in, progress));
+      return std::function<void()>([field, wb] {
+        const std::string name = field->name;
+        wb->document.push(std::make_unique<AddFieldCommand>(wb->document, std::move(*field)));
+        wb->partView.showField(name);
+      });
+    });
+    if (!started) throw InvalidInput("another job is running; wait for it or cancel it first");
+  });
+  return started;
+}
+
+void FieldsPanel::refreshList() {
+  updating_ = true;
+  const auto& fields = workbench().document.project().fields;
+  list_->clear();
+  list_->addItem(tr("(none: plain surface)"));
+  int current = 0;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    const auto& f = fields[i];
+    list_->addItem(QString::fromStdString(f.unit.empty() ? f.name : f.name + " [" + f.unit + "]"));
+    if (f.name == workbench().partView.fieldDisplay().field) current = static_cast<int>(i) + 1;
+  }
+  list_->setCurrentRow(current);
+  remove_->setEnabled(current > 0);
+  updating_ = false;
+}
+
+void FieldsPanel::onSelectionChanged() {
+  if (updating_) return;
+  const int row = list_->currentRow();
+  const auto& fields = workbench().document.project().fields;
+  remove_->setEnabled(row > 0);
+  runUserAction(workbench().reportError, tr("Show field"), [&] {
+    workbench().partView.showField(row > 0 && row - 1 < static_cast<int>(fields.size())
+                                       ? fields[static_cast<std::size_t>(row - 1)].name
+                                       : std::string());
+  });
+}
+
+void FieldsPanel::refreshDisplayControls() {
+  updating_ = true;
+  const FieldDisplay& d = workbench().partView.fieldDisplay();
+  const planning::ScalarField* field = workbench().partView.shownField();
+  colourMap_->setCurrentIndex(colourMap_->findData(static_cast<int>(d.map)));
+  autoRange_->setChecked(d.autoRange);
+  const QString suffix =
+      field && !field->unit.empty() ? " " + QString::fromStdString(field->unit) : "";
+  for (QDoubleSpinBox* box : {min_, max_}) {
+    box->setSuffix(suffix);
+    box->setEnabled(field != nullptr);
+  }
+  min_->setValue(d.lo);
+  max_->setValue(d.hi);
+  colourMap_->setEnabled(field != nullptr);
+  autoRange_->setEnabled(field != nullptr);
+  updating_ = false;
+}
+
+void FieldsPanel::applyRangeFromControls() {
+  runUserAction(workbench().reportError, tr("Set colour range"),
+                [&] { workbench().partView.setRange(min_->value(), max_->value()); });
+}
+
+void FieldsPanel::updateHistogram() {
+  const planning::ScalarField* field = workbench().partView.shownField();
+  const auto& project = workbench().document.project();
+  if (!field || !project.part) return;
+  const FieldDisplay& d = workbench().partView.fieldDisplay();
+  // Shared raster points once each, over the colour range: bars line up with the scalar bar.
+  const std::vector<float> perPoint = ddf::valuesPerPoint(*project.part, field->values);
+  const planning::Histogram h = planning::histogram(perPoint, kHistogramBins, d.lo, d.hi);
+  const std::string label =
+      field->unit.empty() ? field->name : field->name + " [" + field->unit + "]";
+  workbench().plots.showHistogram(h, QString::fromStdString(label));
+}
+
+}  // namespace ddfcam::gui

@@ -1,0 +1,252 @@
+// SPDX-License-Identifier: MIT
+// ddfcam gui: PartView, the document -> scene synchronisation and picking.
+#include <ddfcam/gui/part_view.h>
+
+#include <ddfcam/error.h>
+#include <ddfcam/gui/adapters/poly_data.h>
+#include <ddfcam/gui/part_scene.h>
+#include <ddfcam/gui/vtk_view.h>
+#include <ddfcam/planning/field_statistics.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace ddfcam::gui {
+
+namespace {
+
+constexpr const char* kPathsOverlay = "paths";
+constexpr const char* kToolOverlay = "tool";
+constexpr const char* kGlyphOverlay = "vectors";
+
+std::string withThousands(std::size_t value) {
+  const std::string digits = std::to_string(value);
+  std::string out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
+const planning::ScalarField* findField(const planning::Project& project, const std::string& name) {
+  for (const planning::ScalarField& f : project.fields)
+    if (f.name == name) return &f;
+  return nullptr;
+}
+
+std::string fieldTitle(const planning::ScalarField& field) {
+  return field.unit.empty() ? field.name : field.name + " [" + field.unit + "]";
+}
+
+}  // namespace
+
+PartView::PartView(Document& document, VtkView& view, DisplayParams params, QObject* parent)
+    : QObject(parent),
+      document_(document),
+      view_(view),
+      params_(params),
+      scene_(std::make_unique<PartScene>(view.renderer())) {
+  connect(&document_, &Document::changed, this, &PartView::onDocumentChanged);
+  connect(&view_, &VtkView::clicked, this, [this](QPointF pos) { pick(pos); });
+  onDocumentChanged(Change::All);
+}
+
+PartView::~PartView() = default;
+
+std::string PartView::summary() const {
+  const planning::Project& p = document_.project();
+  if (!p.part || !geometry_) return "no part";
+  const ddf::DisplacementField& f = *p.part;
+  std::ostringstream out;
+  out << p.partName << "   faces: " << withThousands(f.faceCount()) << "   m: " << f.resolution()
+      << "   points: " << withThousands(f.topology().pointCount())
+      << "   surface: " << withThousands(geometry_->surfaceTriangles) << " triangles";
+  if (geometry_->adaptiveSurface)
+    out << " (adaptive, eps " << std::setprecision(2) << geometry_->adaptiveEpsMm << " mm)";
+  else
+    out << " (raster mesh)";
+  return out.str();
+}
+
+void PartView::onDocumentChanged(Changes what) {
+  if (what & (Change::Part | Change::Heights)) rebuildGeometry(what.testFlag(Change::Part));
+  if (what & (Change::Paths | Change::Part)) rebuildPathOverlay();
+  if (what & Change::Part) {
+    setToolOverlay(std::nullopt);
+    rebuildGlyphOverlay();
+  }
+  if (what & (Change::Fields | Change::Part | Change::Heights)) {
+    if (!display_.field.empty() && !findField(document_.project(), display_.field))
+      display_.field.clear();
+    applyFieldDisplay();
+  }
+  view_.requestRender();
+}
+
+void PartView::rebuildGeometry(bool partReplaced) {
+  const planning::Project& p = document_.project();
+  if (!p.part) {
+    geometry_.reset();
+    scene_->setGeometry(SceneGeometry{});
+  } else {
+    auto geometry = std::make_unique<PartGeometry>(buildPartGeometry(*p.part, params_));
+    scene_->setGeometry(geometry->scene);
+    geometry_ = std::move(geometry);
+  }
+  emit geometryChanged(partReplaced);
+}
+
+const planning::ScalarField* PartView::shownField() const {
+  return display_.field.empty() ? nullptr : findField(document_.project(), display_.field);
+}
+
+void PartView::showField(const std::string& name) {
+  if (!name.empty() && !findField(document_.project(), name))
+    throw InvalidInput("the part has no field named '" + name + "'");
+  const planning::ScalarField* field =
+      name.empty() ? nullptr : findField(document_.project(), name);
+  if (field && display_.field != name) display_.map = defaultColourMap(field->isSigned);
+  display_.field = name;
+  display_.autoRange = true;
+  applyFieldDisplay();
+  view_.requestRender();
+}
+
+void PartView::setColourMap(ColourMap map) {
+  display_.map = map;
+  applyFieldDisplay();
+  view_.requestRender();
+}
+
+void PartView::setRange(double lo, double hi) {
+  if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi))
+    throw InvalidInput("colour range: the low end must be below the high end");
+  display_.autoRange = false;
+  display_.lo = lo;
+  display_.hi = hi;
+  applyFieldDisplay();
+  view_.requestRender();
+}
+
+void PartView::setAutoRange() {
+  display_.autoRange = true;
+  applyFieldDisplay();
+  view_.requestRender();
+}
+
+void PartView::applyFieldDisplay() {
+  const planning::ScalarField* field = shownField();
+  const planning::Project& p = document_.project();
+  if (!field || !geometry_ || !p.part) {
+    scene_->clearSurfaceField();
+    emit fieldDisplayChanged();
+    return;
+  }
+  if (display_.autoRange) {
+    if (const auto range = planning::fieldRange(field->values)) {
+      const ValueRange fit = defaultRange(range->min, range->max, field->isSigned);
+      display_.lo = fit.lo;
+      display_.hi = fit.hi;
+    }
+  }
+  FieldStyle style;
+  style.map = display_.map;
+  style.lo = display_.lo;
+  style.hi = display_.hi;
+  style.title = fieldTitle(*field);
+  scene_->setSurfaceField(ddf::valuesAtSamples(*p.part, field->values, geometry_->surfaceSamples),
+                          style);
+  emit fieldDisplayChanged();
+}
+
+void PartView::rebuildPathOverlay() {
+  std::vector<std::vector<Eigen::Vector3d>> polylines;
+  for (const planning::ToolPath& path : document_.project().paths) {
+    for (std::size_t s = 0; s < path.passStarts.size(); ++s) {
+      const std::size_t begin = path.passStarts[s];
+      const std::size_t end =
+          s + 1 < path.passStarts.size() ? path.passStarts[s + 1] : path.poses.size();
+      std::vector<Eigen::Vector3d>& line = polylines.emplace_back();
+      for (std::size_t i = begin; i < end; ++i) line.push_back(path.poses[i].contact);
+    }
+  }
+  OverlayStyle style;
+  style.rgb = {1.0, 0.55, 0.1};
+  style.lineWidth = 2.5;
+  // Contacts lie on the design surface, under the stock until it is ground: draw them on top.
+  style.onTop = true;
+  scene_->setOverlay(kPathsOverlay, toPolylinePolyData(polylines), style);
+  scene_->setOverlayVisible(kPathsOverlay, pathsVisible_);
+}
+
+void PartView::setPathsVisible(bool visible) {
+  pathsVisible_ = visible;
+  scene_->setOverlayVisible(kPathsOverlay, visible);
+  view_.requestRender();
+}
+
+void PartView::setToolOverlay(
+    const std::optional<std::pair<planning::Tool, Eigen::Isometry3d>>& tool) {
+  if (!tool) {
+    scene_->removeOverlay(kToolOverlay);
+  } else {
+    OverlayStyle style;
+    style.rgb = {0.75, 0.78, 0.85};
+    style.opacity = 0.45;
+    style.surface = true;
+    scene_->setOverlay(kToolOverlay,
+                       toSurfacePolyData(planning::toolMesh(tool->first).transformed(tool->second)),
+                       style);
+  }
+  view_.requestRender();
+}
+
+void PartView::rebuildGlyphOverlay() {
+  const planning::Project& p = document_.project();
+  std::vector<Eigen::Vector3d> points, directions;
+  double totalLength = 0.0;
+  if (p.part) {
+    for (int v = 0; v < p.part->vertexCount(); ++v) {
+      points.push_back(p.part->position(v));
+      directions.push_back(p.part->vector(v));
+      totalLength += p.part->vector(v).norm();
+    }
+  }
+  const double meanLength = points.empty() ? 1.0 : totalLength / points.size();
+  OverlayStyle style;
+  style.rgb = {0.55, 0.95, 0.55};
+  style.lineWidth = 1.5;
+  // Arrows one mean vector long: their tips trace roughly the +1 crust.
+  scene_->setOverlay(kGlyphOverlay, toGlyphPolyData(points, directions, meanLength), style);
+  scene_->setOverlayVisible(kGlyphOverlay, glyphsVisible_);
+}
+
+void PartView::setVectorGlyphsVisible(bool visible) {
+  glyphsVisible_ = visible;
+  scene_->setOverlayVisible(kGlyphOverlay, visible);
+  view_.requestRender();
+}
+
+std::optional<PickResult> PartView::pick(QPointF pos) {
+  const planning::Project& p = document_.project();
+  if (!p.part || !geometry_) return std::nullopt;
+  const std::optional<SurfacePick> hit = scene_->pickSurface(view_, pos);
+  if (!hit || hit->face < 0 || hit->face >= p.part->faceCount()) return std::nullopt;
+  const std::optional<ddf::SurfaceLocation> location =
+      ddf::locateOnFace(*p.part, hit->face, hit->position);
+  if (!location) return std::nullopt;
+  PickResult result;
+  result.location = *location;
+  if (const planning::ScalarField* field = shownField()) {
+    result.fieldName = field->name;
+    result.fieldUnit = field->unit;
+    result.fieldValue =
+        ddf::interpolateOnFace(*p.part, field->values, location->face, location->bary);
+  }
+  emit picked(result);
+  return result;
+}
+
+}  // namespace ddfcam::gui

@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: MIT
+// ddfcam gui: ProjectActions, File menu operations on the document.
+#include <ddfcam/gui/project_actions.h>
+
+#include <ddfcam/error.h>
+#include <ddfcam/gui/document.h>
+#include <ddfcam/gui/job_runner.h>
+#include <ddfcam/gui/recent_files.h>
+#include <ddfcam/gui/recovery_manager.h>
+#include <ddfcam/io/project_file.h>
+#include <ddfcam/io/project_loader.h>
+#include <ddfcam/planning/demo_project.h>
+
+#include <QDateTime>
+#include <QFileInfo>
+
+#include <filesystem>
+#include <memory>
+
+namespace ddfcam::gui {
+
+namespace {
+
+std::filesystem::path toPath(const QString& path) {
+  return std::filesystem::path(path.toStdU16String());
+}
+
+}  // namespace
+
+ProjectActions::ProjectActions(Document& document, JobRunner& jobs, RecentFiles& recent,
+                               const WorkbenchDialogs& dialogs, QObject* parent)
+    : QObject(parent), document_(document), jobs_(jobs), recent_(recent), dialogs_(dialogs) {}
+
+QString ProjectActions::projectSuffix() {
+  return QStringLiteral("ddfproj");
+}
+
+bool ProjectActions::canOpen(const QString& path) {
+  return io::canOpenAsProject(toPath(path));
+}
+
+bool ProjectActions::openPath(const QString& path) {
+  if (!maybeSave()) return false;
+  const QString title = tr("Open %1").arg(QFileInfo(path).fileName());
+  return startLoad(title, path, [this](const QString& loaded) {
+    recent_.add(loaded);
+    emit opened(loaded);
+  });
+}
+
+bool ProjectActions::openDemo() {
+  if (!maybeSave()) return false;
+  return startLoad(tr("Open demo part"), QString(), [this](const QString&) { emit opened({}); });
+}
+
+bool ProjectActions::startLoad(const QString& title, const QString& path,
+                               std::function<void(const QString&)> onLoaded) {
+  Document* document = &document_;
+  const bool isProject = !path.isEmpty() && io::isProjectFile(toPath(path));
+  JobWork work = [path, isProject, document, onLoaded](const ProgressCallback& progress) {
+    io::LoadPartParams params;
+    params.progress = progress;
+    auto project = std::make_shared<planning::Project>(
+        path.isEmpty() ? planning::demoProject() : io::openProject(toPath(path), params));
+    return std::function<void()>([project, path, isProject, document, onLoaded] {
+      document->reset(std::move(*project), isProject ? path : QString());
+      onLoaded(path);
+    });
+  };
+  if (!jobs_.start(title, std::move(work))) {
+    if (dialogs_.error)
+      dialogs_.error(
+          title,
+          tr("Another job is running (%1); wait for it or cancel it first.").arg(jobs_.title()));
+    return false;
+  }
+  return true;
+}
+
+bool ProjectActions::save() {
+  if (document_.filePath().isEmpty()) {
+    const QString path = dialogs_.saveProjectPath ? dialogs_.saveProjectPath() : QString();
+    return !path.isEmpty() && saveAs(path);
+  }
+  return saveAs(document_.filePath());
+}
+
+bool ProjectActions::saveAs(const QString& requested) {
+  QString path = requested;
+  if (QFileInfo(path).suffix().compare(projectSuffix(), Qt::CaseInsensitive) != 0)
+    path += "." + projectSuffix();
+  const bool ok = runUserAction(dialogs_.error, tr("Save %1").arg(QFileInfo(path).fileName()),
+                                [&] { io::writeProject(document_.project(), toPath(path)); });
+  if (ok) {
+    document_.markSaved(path);
+    recent_.add(path);
+  }
+  return ok;
+}
+
+bool ProjectActions::maybeSave() {
+  if (!document_.isModified()) return true;
+  const UnsavedChoice choice =
+      dialogs_.unsavedChanges ? dialogs_.unsavedChanges() : UnsavedChoice::Cancel;
+  switch (choice) {
+    case UnsavedChoice::Save:
+      return save();
+    case UnsavedChoice::Discard:
+      return true;
+    case UnsavedChoice::Cancel:
+      break;
+  }
+  return false;
+}
+
+bool ProjectActions::offerRecovery(RecoveryManager& recovery) {
+  const auto entries = RecoveryManager::findAbandoned(recovery.directory());
+  if (entries.empty() || !dialogs_.offerRecovery) return false;
+  QStringList lines;
+  for (const auto& entry : entries)
+    lines << tr("%1 (autosaved %2)")
+                 .arg(entry.originalPath.isEmpty() ? tr("unsaved project") : entry.originalPath,
+                      entry.time.toString(Qt::ISODate));
+  const int chosen = dialogs_.offerRecovery(lines);
+  if (chosen < 0 || chosen >= static_cast<int>(entries.size())) return false;
+  return runUserAction(dialogs_.error, tr("Recover project"), [&] {
+    const auto& entry = entries[static_cast<std::size_t>(chosen)];
+    planning::Project project = recovery.recover(entry);
+    document_.reset(std::move(project), entry.originalPath);
+    document_.markModified();
+  });
+}
+
+}  // namespace ddfcam::gui

@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT
+// Test support: a workbench window with scripted dialogs, private settings and recovery folder.
+#pragma once
+
+#include <ddfcam/gui/main_window.h>
+
+#include <QSettings>
+#include <QString>
+#include <QStringList>
+#include <QTemporaryDir>
+#include <QtTest/QtTest>
+
+#include <memory>
+#include <optional>
+
+namespace ddfcam::test {
+
+/// Answers every dialog of a MainWindow from fields the test sets, and records errors.
+struct ScriptedDialogs {
+  QString openPath;
+  QString saveProjectPath;
+  std::optional<gui::ScreenshotRequest> screenshot;
+  gui::UnsavedChoice unsaved = gui::UnsavedChoice::Discard;
+  int recoveryChoice = -1;
+  QStringList offeredRecoveries;
+  QStringList errors;
+
+  gui::WorkbenchDialogs dialogs() {
+    gui::WorkbenchDialogs d;
+    d.openPath = [this] { return openPath; };
+    d.saveProjectPath = [this] { return saveProjectPath; };
+    d.screenshot = [this] { return screenshot; };
+    d.unsavedChanges = [this] { return unsaved; };
+    d.offerRecovery = [this](const QStringList& entries) {
+      offeredRecoveries = entries;
+      return recoveryChoice;
+    };
+    d.error = [this](const QString& title, const QString& message) {
+      errors << title + ": " + message;
+    };
+    return d;
+  }
+};
+
+/// A MainWindow on private settings and a private recovery folder, shown and exposed.
+struct WorkbenchFixture {
+  QTemporaryDir dir;
+  std::unique_ptr<QSettings> settings;
+  ScriptedDialogs script;
+  std::unique_ptr<gui::MainWindow> window;
+
+  QString recoveryDir() const { return dir.filePath("recovery"); }
+
+  /// Creates (or re-creates) the window; waits for the start-up job (demo part).
+  bool open(bool demo = true) {
+    if (!settings)
+      settings = std::make_unique<QSettings>(dir.filePath("settings.ini"), QSettings::IniFormat);
+    gui::WorkbenchOptions options;
+    options.openDemoAtStart = demo;
+    options.recoveryDirectory = recoveryDir();
+    options.autosaveIntervalMs = 3'600'000;  // tests autosave explicitly
+    options.settings = settings.get();
+    window = std::make_unique<gui::MainWindow>(script.dialogs(), options);
+    window->resize(1000, 700);
+    window->show();
+    return QTest::qWaitForWindowExposed(window.get()) && window->waitForJobs(120'000);
+  }
+};
+
+}  // namespace ddfcam::test

@@ -1,0 +1,301 @@
+// SPDX-License-Identifier: MIT
+// Workbench workflows under Xvfb: colour by a field (scalar bar and histogram against the
+// data), picking, jobs and cancel, undo/redo, project save/load and crash recovery.
+#include "workbench_fixture.h"
+
+#include <ddfcam/ddf/surface_sampling.h>
+#include <ddfcam/gui/app_setup.h>
+#include <ddfcam/gui/document.h>
+#include <ddfcam/gui/document_command.h>
+#include <ddfcam/gui/job_runner.h>
+#include <ddfcam/gui/panels/fields_panel.h>
+#include <ddfcam/gui/panels/pick_panel.h>
+#include <ddfcam/gui/panels/simulation_panel.h>
+#include <ddfcam/gui/part_scene.h>
+#include <ddfcam/gui/part_view.h>
+#include <ddfcam/gui/plot_dock.h>
+#include <ddfcam/gui/recovery_manager.h>
+#include <ddfcam/gui/vtk_error_monitor.h>
+#include <ddfcam/gui/vtk_view.h>
+#include <ddfcam/planning/project.h>
+
+#include <QAction>
+#include <QElapsedTimer>
+#include <QUndoStack>
+#include <QtTest/QtTest>
+
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using ddfcam::gui::FieldKind;
+using ddfcam::planning::Project;
+using ddfcam::planning::projectsEqual;
+
+class WorkflowTest : public QObject {
+  Q_OBJECT
+
+ public:
+  static void initMain() { ddfcam::gui::setDefaultSurfaceFormat(); }
+
+ private slots:
+  void initTestCase();
+  void init();
+  void cleanup() { QCOMPARE(ddfcam::gui::VtkErrorMonitor::errorCount(), 0); }
+  void colourByFieldMatchesScalarBarAndHistogram();
+  void pickReturnsKnownFaceAndBarycentrics();
+  void cancelledJobLeavesDocumentUnchanged();
+  void simulationUndoRedoRoundTrip();
+  void projectSaveLoadRoundTrip();
+  void recoveryAfterSimulatedCrash();
+
+ private:
+  QAction* action(const char* name) { return f_.window->findChild<QAction*>(name); }
+  const Project& project() const { return f_.window->document().project(); }
+  template <typename T>
+  T* panel() {
+    return f_.window->findChild<T*>();
+  }
+  /// Runs the demo path to completion through the Simulation panel.
+  void simulateDemoPath();
+
+  ddfcam::test::WorkbenchFixture f_;
+};
+
+void WorkflowTest::initTestCase() {
+  ddfcam::gui::VtkErrorMonitor::install();
+  QVERIFY(f_.dir.isValid());
+  QVERIFY(f_.open());
+}
+
+void WorkflowTest::init() {
+  f_.script.errors.clear();
+  // Every test starts from a fresh demo session.
+  f_.script.unsaved = ddfcam::gui::UnsavedChoice::Discard;
+  QVERIFY(f_.window->openDemo());
+  QVERIFY(f_.window->waitForJobs());
+  QVERIFY(!f_.window->document().isModified());
+}
+
+void WorkflowTest::simulateDemoPath() {
+  auto* simulation = panel<ddfcam::gui::SimulationPanel>();
+  QVERIFY(simulation != nullptr);
+  QVERIFY(simulation->simulatePath(0));
+  QVERIFY(f_.window->waitForJobs());
+  QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
+}
+
+void WorkflowTest::colourByFieldMatchesScalarBarAndHistogram() {
+  auto* fields = panel<ddfcam::gui::FieldsPanel>();
+  QVERIFY(fields != nullptr);
+  QVERIFY(fields->compute(FieldKind::HeightMm));
+  QVERIFY(f_.window->waitForJobs());
+  QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
+  QCOMPARE(project().fields.size(), std::size_t{1});
+  const auto& ddf = *project().part;
+  // Oracle: h |v| at every raster point straight from the field's definition.
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  std::vector<double> perPoint(ddf.topology().pointCount(), std::nan(""));
+  const int n = ddf.resolution() - 1;
+  for (int f = 0; f < ddf.faceCount(); ++f)
+    for (int k = 0; k <= n; ++k)
+      for (int i = 0; i + k <= n; ++i) {
+        const auto bary = ddf.rasterBary(i, k);
+        const double value = ddf.height(f, i, k) * ddf.vectorAt(f, bary).norm();
+        lo = std::min(lo, value);
+        hi = std::max(hi, value);
+        double& slot = perPoint[ddf.topology().id(f, i, k)];
+        if (std::isnan(slot)) slot = value;  // lowest face first, as the histogram counts
+      }
+  const auto& scene = f_.window->partView().scene();
+  QVERIFY(scene.isFieldShown());
+  QVERIFY2(QString::fromStdString(scene.scalarBarTitle()).contains("[mm]"),
+           scene.scalarBarTitle().c_str());
+  // Signed field: the colour range is symmetric about zero and covers the data.
+  const auto range = scene.scalarRange();
+  QVERIFY(range.lo <= lo + 1e-6 && range.hi >= hi - 1e-6);
+  QCOMPARE(range.lo, -range.hi);
+  QVERIFY(std::max(std::abs(lo), std::abs(hi)) >= 0.999 * range.hi);
+
+  QCustomPlot* plot = f_.window->plots().plot("Histogram");
+  auto* bars = qobject_cast<QCPBars*>(plot->plottable(0));
+  QVERIFY(bars != nullptr);
+  const int bins = ddfcam::gui::FieldsPanel::kHistogramBins;
+  QCOMPARE(bars->data()->size(), bins);
+  std::vector<double> expected(bins, 0.0);
+  const double width = (range.hi - range.lo) / bins;
+  for (double v : perPoint) {
+    const int b = std::clamp(static_cast<int>(std::floor((v - range.lo) / width)), 0, bins - 1);
+    expected[b] += 1.0;
+  }
+  for (int b = 0; b < bins; ++b) {
+    const auto& bar = *(bars->data()->begin() + b);
+    QCOMPARE(bar.key, range.lo + (b + 0.5) * width);
+    // Values that fall exactly on a bin edge may land on either side in float arithmetic.
+    QVERIFY2(std::abs(bar.value - expected[b]) <= 2.0,
+             qPrintable(QString("bin %1: %2 vs %3").arg(b).arg(bar.value).arg(expected[b])));
+  }
+  double total = 0;
+  for (const auto& bar : *bars->data()) total += bar.value;
+  QCOMPARE(total, static_cast<double>(perPoint.size()));
+
+  // A fixed range re-colours and re-bins.
+  f_.window->partView().setRange(0.0, 0.5);
+  QCOMPARE(scene.scalarRange().lo, 0.0);
+  QCOMPARE(scene.scalarRange().hi, 0.5);
+  // The histogram was redrawn (new bars) over the new range.
+  bars = qobject_cast<QCPBars*>(plot->plottable(0));
+  QVERIFY(bars != nullptr);
+  QCOMPARE(bars->data()->begin()->key, 0.5 / bins / 2);
+}
+
+void WorkflowTest::pickReturnsKnownFaceAndBarycentrics() {
+  const auto& ddf = *project().part;
+  auto& view = *f_.window->view();
+  // An interior raster point of a face near the part's middle, seen from above.
+  view.viewFrom(ddfcam::gui::ViewDirection::PlusZ);
+  const int n = ddf.resolution() - 1;
+  const int face = ddf.faceCount() / 2 + 7;
+  const int i = n / 3, k = n / 3;
+  const Eigen::Vector3d target = ddf.surfacePoint(face, i, k);
+  const QPointF at = view.widgetPosition(target);
+  QVERIFY(view.rect().contains(at.toPoint()));
+  QSignalSpy picked(&f_.window->partView(), &ddfcam::gui::PartView::picked);
+  QTest::mouseClick(&view, Qt::LeftButton, Qt::NoModifier, at.toPoint());
+  QCOMPARE(picked.size(), 1);
+  const auto result = picked.front().front().value<ddfcam::gui::PickResult>();
+  QCOMPARE(result.location.face, face);
+  // The click lands within a pixel of the target (rounded to a whole pixel, on a display
+  // surface within eps of the DDF): measure what a pixel is here, in mm and in barycentrics.
+  const auto f = ddf.faceVertices(face);
+  const Eigen::Vector3d p1 = ddf.position(f[0]), p2 = ddf.position(f[1]);
+  const double mmPerPixel = 1.0 / (QLineF(view.widgetPosition(target),
+                                          view.widgetPosition(target + Eigen::Vector3d::UnitX()))
+                                       .length());
+  const double shortestEdge = std::min(
+      {(p2 - p1).norm(), (ddf.position(f[2]) - p2).norm(), (ddf.position(f[2]) - p1).norm()});
+  const double tolMm = 2.0 * mmPerPixel + 0.01;
+  QVERIFY2((result.location.point - target).norm() < tolMm,
+           qPrintable(QString("%1 mm off, %2 mm per pixel")
+                          .arg((result.location.point - target).norm())
+                          .arg(mmPerPixel)));
+  const Eigen::Vector3d bary = ddf.rasterBary(i, k);
+  QVERIFY2((result.location.bary - bary).cwiseAbs().maxCoeff() < 2.0 * tolMm / shortestEdge,
+           qPrintable(QString("%1 %2 %3")
+                          .arg(result.location.bary.x())
+                          .arg(result.location.bary.y())
+                          .arg(result.location.bary.z())));
+  QVERIFY(std::abs(result.location.bary.sum() - 1.0) < 1e-9);
+  // The point reported is on the DDF surface at the reported coordinates.
+  QVERIFY(
+      (ddf.pointAt(face, result.location.bary, result.location.h) - result.location.point).norm() <
+      1e-9);
+  QVERIFY(panel<ddfcam::gui::PickPanel>()->text().contains(QString("face %1").arg(face)));
+}
+
+void WorkflowTest::cancelledJobLeavesDocumentUnchanged() {
+  // A long path (the demo passes forty times over) so that the job is surely still running.
+  ddfcam::planning::ToolPath longPath = project().paths.front();
+  longPath.name = "long path";
+  const auto poses = longPath.poses;
+  for (int r = 1; r < 40; ++r)
+    longPath.poses.insert(longPath.poses.end(), poses.begin(), poses.end());
+  f_.window->document().push(
+      std::make_unique<ddfcam::gui::AddPathCommand>(f_.window->document(), longPath));
+  const Project before = project();
+  const auto revision = f_.window->document().revision();
+
+  auto& jobs = f_.window->jobs();
+  QSignalSpy progress(&jobs, &ddfcam::gui::JobRunner::progressChanged);
+  QSignalSpy finished(&jobs, &ddfcam::gui::JobRunner::finished);
+  QVERIFY(panel<ddfcam::gui::SimulationPanel>()->simulatePath(1));
+  QVERIFY(jobs.isRunning());
+  QTRY_VERIFY_WITH_TIMEOUT(progress.size() > 0, 10'000);
+  QElapsedTimer timer;
+  timer.start();
+  // The status-bar button is what the engineer presses.
+  auto* cancel = f_.window->findChild<QAbstractButton*>("jobCancelButton");
+  QVERIFY(cancel && cancel->isVisible());
+  cancel->click();
+  QVERIFY(f_.window->waitForJobs(5'000));
+  QVERIFY2(timer.elapsed() < 1000, qPrintable(QString::number(timer.elapsed())));
+  QCOMPARE(finished.size(), 1);
+  QCOMPARE(finished.front().at(1).value<ddfcam::gui::JobRunner::Outcome>(),
+           ddfcam::gui::JobRunner::Outcome::Cancelled);
+  QVERIFY(f_.script.errors.isEmpty());
+  QVERIFY(projectsEqual(project(), before));
+  QCOMPARE(f_.window->document().revision(), revision);
+}
+
+void WorkflowTest::simulationUndoRedoRoundTrip() {
+  const Project stock = project();
+  simulateDemoPath();
+  const Project ground = project();
+  QVERIFY(ground.part->allHeights() != stock.part->allHeights());
+  QCOMPARE(ground.states.size(), stock.states.size() + 1);
+  QVERIFY(f_.window->document().isModified());
+  QVERIFY(f_.window->windowTitle().contains('*'));
+
+  QAction* undo = action("actionUndo");
+  QAction* redo = action("actionRedo");
+  QVERIFY(undo->isEnabled());
+  undo->trigger();
+  QVERIFY(projectsEqual(project(), stock));
+  QVERIFY(!f_.window->document().isModified());
+  redo->trigger();
+  QVERIFY(projectsEqual(project(), ground));
+  // Restoring the stock state is itself an edit that undoes cleanly.
+  QVERIFY(panel<ddfcam::gui::SimulationPanel>()->restoreState(0));
+  QVERIFY(project().part->allHeights() == stock.part->allHeights());
+  undo->trigger();
+  QVERIFY(projectsEqual(project(), ground));
+}
+
+void WorkflowTest::projectSaveLoadRoundTrip() {
+  simulateDemoPath();
+  QVERIFY(panel<ddfcam::gui::FieldsPanel>()->compute(FieldKind::MaterialRemoved));
+  QVERIFY(f_.window->waitForJobs());
+  const Project saved = project();
+  f_.script.saveProjectPath = f_.dir.filePath("session");  // suffix added
+  action("actionSaveAs")->trigger();
+  QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
+  const QString file = f_.dir.filePath("session.ddfproj");
+  QVERIFY(QFile::exists(file));
+  QCOMPARE(f_.window->document().filePath(), file);
+  QVERIFY(!f_.window->document().isModified());
+
+  QVERIFY(f_.window->openDemo());
+  QVERIFY(f_.window->waitForJobs());
+  QVERIFY(!projectsEqual(project(), saved));
+  f_.script.openPath = file;
+  action("actionOpen")->trigger();
+  QVERIFY(f_.window->waitForJobs());
+  QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
+  QVERIFY(projectsEqual(project(), saved));
+  QCOMPARE(f_.window->document().filePath(), file);
+  QVERIFY(!f_.window->document().isModified());
+}
+
+void WorkflowTest::recoveryAfterSimulatedCrash() {
+  simulateDemoPath();
+  QVERIFY(f_.window->recovery().autosaveNow());
+  const Project autosaved = project();
+  // A crash: the window goes away without closeEvent (no prompt, no discard of the recovery).
+  f_.window.reset();
+  f_.script.recoveryChoice = 0;
+  QVERIFY(f_.open(/*demo=*/false));
+  QCOMPARE(f_.script.offeredRecoveries.size(), 1);
+  QVERIFY(projectsEqual(project(), autosaved));
+  QVERIFY(f_.window->document().isModified());
+  // Recovered once: a second start offers nothing.
+  f_.script.recoveryChoice = -1;
+  f_.script.offeredRecoveries.clear();
+  f_.window->close();
+  QVERIFY(f_.open(/*demo=*/false));
+  QVERIFY(f_.script.offeredRecoveries.isEmpty());
+}
+
+QTEST_MAIN(WorkflowTest)
+#include "workflow_test.moc"
