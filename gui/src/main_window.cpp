@@ -173,6 +173,9 @@ void MainWindow::createFileMenu() {
     return action;
   };
   add(
+      tr("&New project"), "actionNew", [this] { projectActions_->newProject(); },
+      QKeySequence::New);
+  add(
       tr("&Open..."), "actionOpen",
       [this] {
         const QString path = dialogs_.openPath ? dialogs_.openPath() : QString();

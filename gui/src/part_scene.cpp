@@ -29,6 +29,7 @@
 #include <initializer_list>
 #include <string>
 #include <system_error>
+#include <utility>
 
 namespace ddfcam::gui {
 
@@ -102,9 +103,9 @@ vtkSmartPointer<vtkScalarBarActor> makeScalarBar() {
   // swatches sit left of the minimum and right of the maximum, where one reads them.
   bar->SetOrientationToHorizontal();
   bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  bar->GetPositionCoordinate()->SetValue(0.15, 0.015);
-  bar->SetWidth(0.70);
-  bar->SetHeight(0.15);
+  bar->GetPositionCoordinate()->SetValue(0.2, 0.012);
+  bar->SetWidth(0.60);
+  bar->SetHeight(0.11);
   bar->SetNumberOfLabels(5);
   // Three significant digits read well from microns (0.0123) to part sizes (123).
   bar->SetLabelFormat("%.3g");
@@ -120,6 +121,18 @@ vtkSmartPointer<vtkScalarBarActor> makeScalarBar() {
   bar->SetVisibility(0);
   bar->PickableOff();
   return bar;
+}
+
+/// Whether any value lies clearly below @p lo / above @p hi: interpolation at display vertices
+/// puts values that sit on an end of the range a rounding error beyond it (-1e-17 for 0).
+std::pair<bool, bool> outOfRange(const std::vector<float>& values, double lo, double hi) {
+  const double slack = 1e-6 * (hi - lo);
+  bool below = false, above = false;
+  for (float v : values) {
+    below = below || v < lo - slack;
+    above = above || v > hi + slack;
+  }
+  return {below, above};
 }
 
 /// One value per point of @p surface: split points (feature edges) take the value of the mesh
@@ -257,6 +270,13 @@ void PartScene::setSurfaceField(const std::vector<float>& perVertexValues,
                        std::to_string(perVertexValues.size()) + " values, the surface has " +
                        std::to_string(vertices) + " vertices");
   vtkSmartPointer<vtkLookupTable> table = makeLookupTable(style.map, style.lo, style.hi);
+  // Out-of-range colours only when values are out of range: with colours interpolated before
+  // mapping, values exactly at an end of the range would otherwise speckle with them.
+  const auto [below, above] = outOfRange(perVertexValues, style.lo, style.hi);
+  table->SetUseBelowRangeColor(below ? 1 : 0);
+  table->SetUseAboveRangeColor(above ? 1 : 0);
+  scalarBar_->SetDrawBelowRangeSwatch(below);
+  scalarBar_->SetDrawAboveRangeSwatch(above);
 
   // A shallow copy carries the scalars, so the caller's polydata (shared with PartGeometry)
   // is never modified.

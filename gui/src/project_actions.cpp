@@ -48,6 +48,12 @@ bool ProjectActions::openPath(const QString& path) {
   });
 }
 
+bool ProjectActions::newProject() {
+  if (!maybeSave()) return false;
+  return runUserAction(dialogs_.error, tr("New project"),
+                       [&] { document_.reset(planning::Project{}); });
+}
+
 bool ProjectActions::openDemo() {
   if (!maybeSave()) return false;
   return startLoad(tr("Open demo part"), QString(), [this](const QString&) { emit opened({}); });

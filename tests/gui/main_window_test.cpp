@@ -7,6 +7,7 @@
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/gui/app_setup.h>
+#include <ddfcam/gui/console_dock.h>
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/part_scene.h>
 #include <ddfcam/gui/part_view.h>
@@ -218,6 +219,8 @@ void MainWindowTest::corruptFileKeepsDocument() {
   QVERIFY(f_.window->waitForJobs());
   QCOMPARE(f_.script.errors.size(), 1);
   QVERIFY2(f_.script.errors.front().contains(fileName), qPrintable(f_.script.errors.front()));
+  // The console keeps the same unrolled message (log lines arrive through the event loop).
+  QTRY_VERIFY_WITH_TIMEOUT(f_.window->console().text().contains(fileName), 2000);
   QVERIFY(ddfcam::planning::projectsEqual(project(), before));
   QCOMPARE(f_.window->statusText(), statusBefore);
   QVERIFY(changedFraction(imageBefore, frame()) < 0.001);

@@ -81,6 +81,7 @@ FieldsPanel::FieldsPanel(Workbench& workbench, QWidget* parent) : Panel(workbenc
     if (what & (Change::Fields | Change::Part)) refreshList();
   });
   connect(&workbench.partView, &PartView::fieldDisplayChanged, this, [this] {
+    refreshList();
     refreshDisplayControls();
     updateHistogram();
   });

@@ -66,6 +66,9 @@ class ProjectActions : public QObject {
   /// new project on it (the mesh also becomes the design mesh). Asks about unsaved changes
   /// first. @return true if the load job started.
   bool openPath(const QString& path);
+  /// @brief Replaces the document by an empty project (asks about unsaved changes first).
+  /// @return true if done.
+  bool newProject();
   /// @brief Starts a new project on the built-in demo part (a job). @return true if started.
   bool openDemo();
   /// @brief Saves to the document's file, or asks for one. @return true if saved.

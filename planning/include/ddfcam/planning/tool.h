@@ -20,7 +20,9 @@ struct Tool {
   ToolKind kind = ToolKind::CylinderRoll;  ///< shape (default cylindrical roll)
   double radiusMm = 5.0;                   ///< roll or ball radius, mm (default 5)
   double widthMm = 10.0;  ///< roll width along its axis, mm; unused for a ball (default 10)
-  int segments = 50;      ///< facets around the circumference (default 50)
+  /// Facets around the circumference (default 48: a multiple of 4 puts mesh vertices on the
+  /// roll's lowest line, so the mesh cuts as deep as the round roll it stands for).
+  int segments = 48;
 
   bool operator==(const Tool&) const = default;
 };
