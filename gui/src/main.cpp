@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -109,12 +110,19 @@ int main(int argc, char** argv) {
     dialogs.offerRecovery = [](const QStringList&) { return -1; };
     dialogs.unsavedChanges = [] { return ddfcam::gui::UnsavedChoice::Discard; };
   }
-  ddfcam::gui::MainWindow window(dialogs, workbench);
-  if (options->part) window.openPath(QString::fromStdString(*options->part));
-  if (options->screenshot) {
-    if (!window.waitForJobs(600'000) || failed) return 1;
-    return writeScreenshot(window, QString::fromStdString(*options->screenshot));
+  std::unique_ptr<ddfcam::gui::MainWindow> window;
+  try {
+    window = std::make_unique<ddfcam::gui::MainWindow>(dialogs, workbench);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ddfcam: cannot start the workbench: %s\n",
+                 ddfcam::unrollMessage(e).c_str());
+    return 1;
   }
-  window.show();
+  if (options->part) window->openPath(QString::fromStdString(*options->part));
+  if (options->screenshot) {
+    if (!window->waitForJobs(600'000) || failed) return 1;
+    return writeScreenshot(*window, QString::fromStdString(*options->screenshot));
+  }
+  window->show();
   return app.exec();
 }

@@ -50,6 +50,9 @@ MainWindow::MainWindow(WorkbenchDialogs dialogs, WorkbenchOptions options, QWidg
   resize(1280, 820);
   // The 3D view is the workbench; the plots get a strip below it.
   resizeDocks({plots_}, {190}, Qt::Vertical);
+  // The engineer's own arrangement of docks and window, as left last time.
+  restoreGeometry(settings_->value("window/geometry").toByteArray());
+  restoreState(settings_->value("window/state").toByteArray());
   updateTitle();
   updateStatus();
   if (!projectActions_->offerRecovery(*recovery_) && options.openDemoAtStart) openDemo();
@@ -67,8 +70,8 @@ void MainWindow::createServices(const WorkbenchOptions& options) {
   };
   jobs_ = std::make_unique<JobRunner>(report);
   partView_ = std::make_unique<PartView>(*document_, *view_);
-  QSettings* settings = options.settings ? options.settings : new QSettings(this);
-  recent_ = std::make_unique<RecentFiles>(settings);
+  settings_ = options.settings ? options.settings : new QSettings(this);
+  recent_ = std::make_unique<RecentFiles>(settings_);
   RecoveryParams recovery;
   if (!options.recoveryDirectory.isEmpty()) recovery.directory = options.recoveryDirectory;
   recovery.intervalMs = options.autosaveIntervalMs;
@@ -276,6 +279,8 @@ void MainWindow::closeEvent(QCloseEvent* event) {
   jobs_->cancel();
   jobs_->waitForFinished(10'000);
   recovery_->discardRecovery();
+  settings_->setValue("window/geometry", saveGeometry());
+  settings_->setValue("window/state", saveState());
   event->accept();
 }
 

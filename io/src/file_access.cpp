@@ -4,6 +4,8 @@
 
 #include <ddfcam/error.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <random>
@@ -94,6 +96,13 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
   AtomicFileWriter writer(path);
   writer.write(bytes);
   writer.commit();
+}
+
+std::string lowerExtension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
 }
 
 }  // namespace ddfcam::io::detail

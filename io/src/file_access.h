@@ -42,4 +42,7 @@ class AtomicFileWriter {
 /// @brief Writes @p bytes to @p path atomically (see AtomicFileWriter).
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 
+/// @brief The extension of @p path in lower case, dot included (".stl"); empty if none.
+std::string lowerExtension(const std::filesystem::path& path);
+
 }  // namespace ddfcam::io::detail

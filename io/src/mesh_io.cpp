@@ -15,13 +15,6 @@
 namespace ddfcam::io {
 namespace {
 
-std::string lowerExtension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
 MeshFormat requireFormat(const std::filesystem::path& path) {
   const auto format = meshFormatOf(path);
   if (!format) {
@@ -64,7 +57,7 @@ void validateIndices(const ddf::TriangleMesh& mesh) {
 }  // namespace
 
 std::optional<MeshFormat> meshFormatOf(const std::filesystem::path& path) {
-  const std::string ext = lowerExtension(path);
+  const std::string ext = detail::lowerExtension(path);
   if (ext == ".stl") return MeshFormat::Stl;
   if (ext == ".obj") return MeshFormat::Obj;
   if (ext == ".ply") return MeshFormat::Ply;

@@ -6,6 +6,8 @@
 #include <ddfcam/io/ddf_file.h>
 #include <ddfcam/io/mesh_io.h>
 
+#include "file_access.h"
+
 #include <algorithm>
 #include <cctype>
 
@@ -13,10 +15,7 @@ namespace ddfcam::io {
 namespace {
 
 bool isDdfFile(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".ddf";
+  return detail::lowerExtension(path) == ".ddf";
 }
 
 ddf::DisplacementField convertMesh(const std::filesystem::path& path, const LoadPartParams& params,

@@ -6,22 +6,13 @@
 #include <ddfcam/io/project_file.h>
 #include <ddfcam/progress.h>
 
-#include <algorithm>
-#include <cctype>
+#include "file_access.h"
+
 #include <string>
 
 namespace ddfcam::io {
 
-namespace {
-
-std::string lowerExtension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
-}  // namespace
+using detail::lowerExtension;
 
 bool isProjectFile(const std::filesystem::path& path) {
   return lowerExtension(path) == ".ddfproj";

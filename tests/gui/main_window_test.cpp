@@ -16,6 +16,7 @@
 #include <ddfcam/planning/project.h>
 
 #include <QAction>
+#include <QDockWidget>
 #include <QFile>
 #include <QMimeData>
 #include <QtTest/QtTest>
@@ -79,6 +80,7 @@ class MainWindowTest : public QObject {
   void corruptFileKeepsDocument();
   void saveScreenshotAtChosenSize();
   void dropOpensFile();
+  void dockLayoutSurvivesRestart();
 
  private:
   QImage frame() { return f_.window->view()->renderImage(); }
@@ -266,6 +268,19 @@ void MainWindowTest::dropOpensFile() {
   refused.ignore();
   QApplication::sendEvent(f_.window.get(), &refused);
   QVERIFY(!refused.isAccepted());
+}
+
+void MainWindowTest::dockLayoutSurvivesRestart() {
+  auto* console = f_.window->findChild<QDockWidget*>("consoleDock");
+  auto* part = f_.window->findChild<QDockWidget*>("panel_part");
+  QVERIFY(console && part);
+  QVERIFY(!part->isHidden());
+  part->hide();
+  f_.script.unsaved = ddfcam::gui::UnsavedChoice::Discard;
+  QVERIFY(f_.window->close());
+  QVERIFY(f_.open());
+  QVERIFY(f_.window->findChild<QDockWidget*>("panel_part")->isHidden());
+  QVERIFY(!f_.window->findChild<QDockWidget*>("panel_fields")->isHidden());
 }
 
 QTEST_MAIN(MainWindowTest)

@@ -113,6 +113,7 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<ProjectActions> projectActions_;
   std::unique_ptr<Workbench> workbench_;
   std::vector<Panel*> panels_;
+  QSettings* settings_ = nullptr;
 };
 
 }  // namespace ddfcam::gui
