@@ -45,7 +45,7 @@ GrindingWorkload fig8_16Workload() {
   params.m = 50;
   auto generated = ddf::freeformPatch(params);
   auto design = std::dynamic_pointer_cast<const ddf::HeightFieldSurface>(generated.design);
-  GrindingWorkload w{std::move(generated.ddf), design, roll(), {}};
+  GrindingWorkload w{std::move(generated.ddf), design, roll(), {}, {}};
   w.poses = linePoses(*design, {4.0, 12.5}, {46.0, 12.5}, 217, 0.3);
   w.initialHeights = w.ddf.allHeights();
   return w;
@@ -59,7 +59,7 @@ GrindingWorkload fig8_14Workload() {
   shape.amplitudeMm = 2.5;
   auto design = std::make_shared<const ddf::BSplinePatch>(ddf::makeBumpPatch(shape));
   auto generated = ddf::fromAnalytic(support, std::vector<ddf::Vec3>(3, {0, 0, 5}), 400, design);
-  GrindingWorkload w{std::move(generated.ddf), design, roll(), {}};
+  GrindingWorkload w{std::move(generated.ddf), design, roll(), {}, {}};
   w.poses = linePoses(*design, {10.0, 20.0}, {60.0, 30.0}, 216, 0.3);
   w.initialHeights = w.ddf.allHeights();
   return w;
