@@ -9,6 +9,8 @@
 #include <ddfcam/planning/field_statistics.h>
 
 #include <cmath>
+
+#include <vtkPolyData.h>
 #include <iomanip>
 #include <sstream>
 
@@ -19,6 +21,7 @@ namespace {
 constexpr const char* kPathsOverlay = "paths";
 constexpr const char* kToolOverlay = "tool";
 constexpr const char* kGlyphOverlay = "vectors";
+constexpr const char* kPickOverlay = "pick";
 
 std::string withThousands(std::size_t value) {
   const std::string digits = std::to_string(value);
@@ -75,6 +78,7 @@ void PartView::onDocumentChanged(Changes what) {
   if (what & (Change::Paths | Change::Part)) rebuildPathOverlay();
   if (what & Change::Part) {
     setToolOverlay(std::nullopt);
+    scene_->removeOverlay(kPickOverlay);
     rebuildGlyphOverlay();
   }
   if (what & (Change::Fields | Change::Part | Change::Heights)) {
@@ -229,6 +233,24 @@ void PartView::setVectorGlyphsVisible(bool visible) {
   view_.requestRender();
 }
 
+void PartView::showPickMarker(const ddf::SurfaceLocation& location) {
+  const ddf::DisplacementField& part = *document_.project().part;
+  // An arrow along the stubble through the picked point, as long as a tenth of the part.
+  const auto box =
+      geometry_ && geometry_->scene.surface ? geometry_->scene.surface->GetBounds() : nullptr;
+  const double size =
+      box ? 0.1 * std::hypot(box[1] - box[0], box[3] - box[2], box[5] - box[4]) : 1.0;
+  OverlayStyle style;
+  style.rgb = {1.0, 0.2, 0.25};
+  style.lineWidth = 3.0;
+  style.onTop = true;
+  scene_->setOverlay(
+      kPickOverlay,
+      toGlyphPolyData({location.point}, {part.vectorAt(location.face, location.bary)}, size),
+      style);
+  view_.requestRender();
+}
+
 std::optional<PickResult> PartView::pick(QPointF pos) {
   const planning::Project& p = document_.project();
   if (!p.part || !geometry_) return std::nullopt;
@@ -245,6 +267,7 @@ std::optional<PickResult> PartView::pick(QPointF pos) {
     result.fieldValue =
         ddf::interpolateOnFace(*p.part, field->values, location->face, location->bary);
   }
+  showPickMarker(*location);
   emit picked(result);
   return result;
 }

@@ -21,6 +21,7 @@
 #include <ddfcam/planning/project.h>
 
 #include <QAction>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QUndoStack>
 #include <QtTest/QtTest>
@@ -195,6 +196,8 @@ void WorkflowTest::pickReturnsKnownFaceAndBarycentrics() {
       (ddf.pointAt(face, result.location.bary, result.location.h) - result.location.point).norm() <
       1e-9);
   QVERIFY(panel<ddfcam::gui::PickPanel>()->text().contains(QString("face %1").arg(face)));
+  // The picked point is marked in the view by an arrow (three line cells).
+  QCOMPARE(f_.window->partView().scene().overlayCellCount("pick"), 3);
 }
 
 void WorkflowTest::cancelledJobLeavesDocumentUnchanged() {
@@ -334,6 +337,15 @@ void WorkflowTest::groundPartShowsMaterialRemoved() {
   const QImage window = f_.window->grab().toImage();
   ddfcam::test::dumpFrame(window, "workbench");
   QVERIFY(!window.isNull());
+  // The other panels, for a look when DDFCAM_GUI_TEST_OUTPUT is set (with a picked point).
+  QVERIFY(f_.window->partView().pick(QPointF(f_.window->view()->rect().center())).has_value());
+  for (const char* id : {"part", "simulation", "pick"}) {
+    auto* dock = f_.window->findChild<QDockWidget*>(QString("panel_") + id);
+    QVERIFY(dock != nullptr);
+    dock->raise();
+    QTest::qWait(50);
+    ddfcam::test::dumpFrame(f_.window->grab().toImage(), QString("workbench_") + id);
+  }
   f_.window->resize(testSize);
 }
 

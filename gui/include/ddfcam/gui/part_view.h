@@ -80,7 +80,8 @@ class PartView : public QObject {
   void setPathsVisible(bool visible);
 
   /// @brief The surface point under widget position @p pos, or nullopt if the surface is not
-  /// hit there. Also emits picked().
+  /// hit there. Marks the point with an arrow along its stubble (overlay "pick") and emits
+  /// picked().
   std::optional<PickResult> pick(QPointF pos);
 
  signals:
@@ -97,6 +98,7 @@ class PartView : public QObject {
   void applyFieldDisplay();
   void rebuildPathOverlay();
   void rebuildGlyphOverlay();
+  void showPickMarker(const ddf::SurfaceLocation& location);
 
   Document& document_;
   VtkView& view_;
