@@ -252,4 +252,19 @@ GeneratedSurface demoPart(const DemoPartParams& p) {
   return out;
 }
 
+GeneratedSurface ellipsoidPart(const EllipsoidParams& p) {
+  auto surface = std::make_shared<EllipsoidSurface>(p.axesMm.x(), p.axesMm.y(), p.axesMm.z());
+  require(p.subdivisions >= 0 && p.subdivisions <= 7, "ellipsoidPart: subdivisions must be 0..7");
+  requireFraction(p.crustFraction, "ellipsoidPart");
+  const double rmin = p.axesMm.minCoeff() * p.axesMm.minCoeff() / p.axesMm.maxCoeff();
+  auto [points, triangles] = unitIcosphere(p.subdivisions);
+  std::vector<Vec3> vectors;
+  vectors.reserve(points.size());
+  for (Vec3& q : points) {
+    q = q.cwiseProduct(p.axesMm);
+    vectors.push_back(surface->normal(q) * (p.crustFraction * rmin));
+  }
+  return fromAnalytic(makeSupportMesh(points, triangles), std::move(vectors), p.m, surface);
+}
+
 }  // namespace ddfcam::ddf

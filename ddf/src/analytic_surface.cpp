@@ -149,4 +149,21 @@ std::string SinSinSurface::name() const {
   return describe("sin x sin y", {{"A", amplitude_}, {"s", scale_}});
 }
 
+EllipsoidSurface::EllipsoidSurface(double aMm, double bMm, double cMm) : axes_(aMm, bMm, cMm) {
+  if (!(aMm > 0.0 && bMm > 0.0 && cMm > 0.0))
+    throw InvalidInput("ellipsoid semi-axes must be positive");
+}
+
+double EllipsoidSurface::value(const Vec3& x) const {
+  return 0.5 * axes_.minCoeff() * (x.cwiseQuotient(axes_).squaredNorm() - 1.0);
+}
+
+Vec3 EllipsoidSurface::gradient(const Vec3& x) const {
+  return axes_.minCoeff() * x.cwiseQuotient(axes_.cwiseProduct(axes_));
+}
+
+std::string EllipsoidSurface::name() const {
+  return describe("ellipsoid", {{"a", axes_.x()}, {"b", axes_.y()}, {"c", axes_.z()}});
+}
+
 }  // namespace ddfcam::ddf

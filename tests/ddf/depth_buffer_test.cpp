@@ -259,8 +259,9 @@ TEST(CrustHash, FollowsVectorChanges) {
   // The faces under the triangle (x, y in [2, 3]) are among the candidates.
   for (int f = 0; f < ddf.faceCount(); ++f) {
     const Vec3 centre = ddf.basePoint(f, Vec3(1, 1, 1) / 3.0);
-    if (centre.x() > 2 && centre.x() < 3 && centre.y() > 2 && centre.y() < 3)
+    if (centre.x() > 2 && centre.x() < 3 && centre.y() > 2 && centre.y() < 3) {
       EXPECT_TRUE(std::binary_search(after.begin(), after.end(), f)) << "face " << f;
+    }
   }
 }
 

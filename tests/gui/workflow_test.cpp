@@ -53,6 +53,7 @@ class WorkflowTest : public QObject {
   void projectSaveLoadRoundTrip();
   void recoveryAfterSimulatedCrash();
   void groundPartShowsMaterialRemoved();
+  void colourByPrincipalCurvature();
 
  private:
   QAction* action(const char* name) { return f_.window->findChild<QAction*>(name); }
@@ -347,6 +348,33 @@ void WorkflowTest::groundPartShowsMaterialRemoved() {
     ddfcam::test::dumpFrame(f_.window->grab().toImage(), QString("workbench_") + id);
   }
   f_.window->resize(testSize);
+}
+
+void WorkflowTest::colourByPrincipalCurvature() {
+  auto* fields = panel<ddfcam::gui::FieldsPanel>();
+  for (FieldKind kind : {FieldKind::KMin, FieldKind::KMax}) {
+    QVERIFY(fields->compute(kind));
+    QVERIFY(f_.window->waitForJobs());
+  }
+  QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
+  QCOMPARE(project().fields.size(), std::size_t{2});
+  const auto& kMin = project().fields[0];
+  const auto& kMax = project().fields[1];
+  QCOMPARE(QString::fromStdString(kMax.name), QString("k_max"));
+  QCOMPARE(QString::fromStdString(kMax.unit), QString("1/mm"));
+  // Invariant: k_max >= k_min at every raster point, and the free-form part is curved.
+  double largest = 0;
+  for (std::size_t i = 0; i < kMax.values.size(); ++i) {
+    QVERIFY(kMax.values[i] >= kMin.values[i]);
+    largest = std::max(largest, std::abs(static_cast<double>(kMax.values[i])));
+  }
+  QVERIFY(largest > 1e-3);
+  // The last computed field is shown, signed: diverging map, symmetric range, units in the bar.
+  const auto& scene = f_.window->partView().scene();
+  QCOMPARE(QString::fromStdString(scene.scalarBarTitle()), QString("k_max [1/mm]"));
+  QCOMPARE(scene.scalarRange().lo, -scene.scalarRange().hi);
+  QCOMPARE(f_.window->partView().fieldDisplay().map, ddfcam::gui::ColourMap::CoolWarm);
+  ddfcam::test::dumpFrame(f_.window->view()->renderImage(), "workbench_kmax");
 }
 
 QTEST_MAIN(WorkflowTest)

@@ -10,6 +10,7 @@
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/plot_dock.h>
 #include <ddfcam/planning/builtin_fields.h>
+#include <ddfcam/planning/curvature.h>
 #include <ddfcam/planning/field_statistics.h>
 
 #include <QAction>
@@ -37,8 +38,16 @@ struct FieldInputs {
   std::optional<ddf::TriangleMesh> design;
 };
 
+planning::ScalarField curvature(planning::CurvatureQuantity quantity, const FieldInputs& in,
+                                const ProgressCallback& progress) {
+  planning::CurvatureParams params;
+  params.progress = progress;
+  return planning::curvatureScalarField(planning::computeCurvature(in.part, params), quantity);
+}
+
 planning::ScalarField computeField(FieldKind kind, const FieldInputs& in,
                                    const ProgressCallback& progress) {
+  using Q = planning::CurvatureQuantity;
   switch (kind) {
     case FieldKind::Height:
       return planning::heightField(in.part);
@@ -48,6 +57,14 @@ planning::ScalarField computeField(FieldKind kind, const FieldInputs& in,
       return planning::materialRemovedField(in.part, in.reference);
     case FieldKind::Deviation:
       return planning::deviationField(in.part, *in.design, progress);
+    case FieldKind::KMax:
+      return curvature(Q::KMax, in, progress);
+    case FieldKind::KMin:
+      return curvature(Q::KMin, in, progress);
+    case FieldKind::MeanCurvature:
+      return curvature(Q::Mean, in, progress);
+    case FieldKind::GaussianCurvature:
+      return curvature(Q::Gaussian, in, progress);
   }
   throw InvalidInput("unknown field kind");
 }
@@ -62,6 +79,14 @@ QString kindTitle(FieldKind kind) {
       return QObject::tr("Material removed since stock (mm)");
     case FieldKind::Deviation:
       return QObject::tr("Deviation from design mesh (mm)");
+    case FieldKind::KMax:
+      return QObject::tr("Principal curvature k_max (1/mm)");
+    case FieldKind::KMin:
+      return QObject::tr("Principal curvature k_min (1/mm)");
+    case FieldKind::MeanCurvature:
+      return QObject::tr("Mean curvature (1/mm)");
+    case FieldKind::GaussianCurvature:
+      return QObject::tr("Gaussian curvature (1/mm^2)");
   }
   return {};
 }
@@ -70,7 +95,8 @@ QString kindTitle(FieldKind kind) {
 
 FieldsPanel::FieldsPanel(Workbench& workbench, QWidget* parent) : Panel(workbench, parent) {
   for (FieldKind kind :
-       {FieldKind::Height, FieldKind::HeightMm, FieldKind::MaterialRemoved, FieldKind::Deviation}) {
+       {FieldKind::Height, FieldKind::HeightMm, FieldKind::MaterialRemoved, FieldKind::Deviation,
+        FieldKind::KMax, FieldKind::KMin, FieldKind::MeanCurvature, FieldKind::GaussianCurvature}) {
     auto* action = new QAction(tr("Compute %1").arg(kindTitle(kind)), this);
     action->setObjectName(QString("actionComputeField%1").arg(static_cast<int>(kind)));
     connect(action, &QAction::triggered, this, [this, kind] { compute(kind); });

@@ -184,4 +184,18 @@ struct DemoPartParams {
 /// @throws InvalidInput as graphPatch, or for an allowance < 0 or >= 0.9 L.
 GeneratedSurface demoPart(const DemoPartParams& params = {});
 
+/// @brief Ellipsoid (EllipsoidSurface) with semi-axes (a, b, c); support = the icosphere of
+/// spherePart scaled by (a, b, c) (vertices on the ellipsoid); vectors are the exact unit
+/// normals times crustFraction * rmin, where rmin = min(axis)^2 / max(axis) is the smallest
+/// radius of curvature, which keeps the crust a unique-projection neighbourhood.
+struct EllipsoidParams {
+  Vec3 axesMm{3.0, 2.0, 1.0};  ///< semi-axes (a, b, c), mm (default: 3, 2, 1)
+  int subdivisions = 3;        ///< icosphere levels s, 0..7 (default: 3 -> 1280 triangles)
+  int m = 17;                  ///< raster resolution (default: 17)
+  double crustFraction = 0.5;  ///< vector length / rmin, in (0, 1) (default: 0.5)
+};
+/// @throws InvalidInput for non-positive axes, s outside 0..7, m < 2, a crustFraction outside
+/// (0, 1), or (from fromAnalytic) a stubble that misses the surface.
+GeneratedSurface ellipsoidPart(const EllipsoidParams& params = {});
+
 }  // namespace ddfcam::ddf

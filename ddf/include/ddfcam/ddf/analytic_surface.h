@@ -192,4 +192,23 @@ class SinSinSurface : public HeightFieldSurface {
   double scale_;
 };
 
+/// @brief Ellipsoid x^2/a^2 + y^2/b^2 + z^2/c^2 = 1 centred at the origin, outward normal;
+/// value = (x^2/a^2 + y^2/b^2 + z^2/c^2 - 1) min(a, b, c) / 2 (not a distance; |grad| = 1 at
+/// the ends of the shortest axis). The (3, 2, 1) ellipsoid is the umbilic oracle.
+class EllipsoidSurface : public AnalyticSurface {
+ public:
+  /// @param aMm, bMm, cMm semi-axes along x, y, z, mm.
+  /// @throws InvalidInput unless all are positive.
+  EllipsoidSurface(double aMm, double bMm, double cMm);
+  double value(const Vec3& x) const override;
+  Vec3 gradient(const Vec3& x) const override;
+  bool isDistance() const override { return false; }
+  std::string name() const override;
+  /// @brief Semi-axes (a, b, c), mm.
+  const Vec3& axes() const { return axes_; }
+
+ private:
+  Vec3 axes_;
+};
+
 }  // namespace ddfcam::ddf

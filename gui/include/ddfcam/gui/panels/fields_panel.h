@@ -17,10 +17,14 @@ namespace ddfcam::gui {
 
 /// @brief Fields the panel can compute (each through the core, as a job).
 enum class FieldKind {
-  Height,           ///< planning::heightField
-  HeightMm,         ///< planning::heightMmField
-  MaterialRemoved,  ///< planning::materialRemovedField against the first state ("stock")
-  Deviation,        ///< planning::deviationField against the design mesh
+  Height,             ///< planning::heightField
+  HeightMm,           ///< planning::heightMmField
+  MaterialRemoved,    ///< planning::materialRemovedField against the first state ("stock")
+  Deviation,          ///< planning::deviationField against the design mesh
+  KMax,               ///< planning::computeCurvature, larger principal curvature (tool side)
+  KMin,               ///< smaller principal curvature
+  MeanCurvature,      ///< mean curvature
+  GaussianCurvature,  ///< Gaussian curvature
 };
 
 /// @brief Lists the document's fields; selecting one colours the surface by it (PartView) and
