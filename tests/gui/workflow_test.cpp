@@ -375,6 +375,20 @@ void WorkflowTest::colourByPrincipalCurvature() {
   QCOMPARE(scene.scalarRange().lo, -scene.scalarRange().hi);
   QCOMPARE(f_.window->partView().fieldDisplay().map, ddfcam::gui::ColourMap::CoolWarm);
   ddfcam::test::dumpFrame(f_.window->view()->renderImage(), "workbench_kmax");
+
+  // Largest non-gouging tool: 1/|k_min| where the surface is concave, capped at the part size.
+  QVERIFY(fields->compute(FieldKind::MaxToolRadius));
+  QVERIFY(f_.window->waitForJobs());
+  const auto& radius = project().fields.back();
+  QCOMPARE(QString::fromStdString(radius.unit), QString("mm"));
+  const float cap = *std::max_element(radius.values.begin(), radius.values.end());
+  QVERIFY(cap > 40.0f && cap < 60.0f);  // the 40 x 30 mm demo part's diagonal
+  for (std::size_t i = 0; i < radius.values.size(); ++i) {
+    const double k = project().fields[0].values[i];
+    const double expected = k < 0 ? std::min(1.0 / -k, static_cast<double>(cap)) : cap;
+    QVERIFY2(std::abs(radius.values[i] - expected) <= 1e-4 * expected,
+             qPrintable(QString("%1: %2 vs %3").arg(i).arg(radius.values[i]).arg(expected)));
+  }
 }
 
 QTEST_MAIN(WorkflowTest)

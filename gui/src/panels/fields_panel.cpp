@@ -2,6 +2,7 @@
 // ddfcam gui: FieldsPanel.
 #include <ddfcam/gui/panels/fields_panel.h>
 
+#include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/ddf/surface_sampling.h>
 #include <ddfcam/error.h>
 #include <ddfcam/gui/document.h>
@@ -12,6 +13,7 @@
 #include <ddfcam/planning/builtin_fields.h>
 #include <ddfcam/planning/curvature.h>
 #include <ddfcam/planning/field_statistics.h>
+#include <ddfcam/planning/segmentation.h>
 
 #include <QAction>
 #include <QCheckBox>
@@ -25,6 +27,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <memory>
 
 namespace ddfcam::gui {
@@ -38,11 +41,20 @@ struct FieldInputs {
   std::optional<ddf::TriangleMesh> design;
 };
 
-planning::ScalarField curvature(planning::CurvatureQuantity quantity, const FieldInputs& in,
-                                const ProgressCallback& progress) {
+double supportDiagonalMm(const ddf::DisplacementField& part) {
+  const auto box = ddf::extractSupportMesh(part).bounds();
+  return std::max((box[1] - box[0]).norm(), 1e-3);
+}
+
+planning::CurvatureField curvatureOf(const FieldInputs& in, const ProgressCallback& progress) {
   planning::CurvatureParams params;
   params.progress = progress;
-  return planning::curvatureScalarField(planning::computeCurvature(in.part, params), quantity);
+  return planning::computeCurvature(in.part, params);
+}
+
+planning::ScalarField curvature(planning::CurvatureQuantity quantity, const FieldInputs& in,
+                                const ProgressCallback& progress) {
+  return planning::curvatureScalarField(curvatureOf(in, progress), quantity);
 }
 
 planning::ScalarField computeField(FieldKind kind, const FieldInputs& in,
@@ -65,6 +77,11 @@ planning::ScalarField computeField(FieldKind kind, const FieldInputs& in,
       return curvature(Q::Mean, in, progress);
     case FieldKind::GaussianCurvature:
       return curvature(Q::Gaussian, in, progress);
+    case FieldKind::CurvatureType:
+      return planning::curvatureTypeField(curvatureOf(in, progress));
+    case FieldKind::MaxToolRadius:
+      // Capped at the part's size: any larger tool fits, and the colour range stays readable.
+      return planning::maxToolRadiusField(curvatureOf(in, progress), supportDiagonalMm(in.part));
   }
   throw InvalidInput("unknown field kind");
 }
@@ -87,6 +104,10 @@ QString kindTitle(FieldKind kind) {
       return QObject::tr("Mean curvature (1/mm)");
     case FieldKind::GaussianCurvature:
       return QObject::tr("Gaussian curvature (1/mm^2)");
+    case FieldKind::CurvatureType:
+      return QObject::tr("Curvature type (flat, convex, concave, saddle)");
+    case FieldKind::MaxToolRadius:
+      return QObject::tr("Largest tool radius without gouging (mm)");
   }
   return {};
 }
@@ -96,7 +117,8 @@ QString kindTitle(FieldKind kind) {
 FieldsPanel::FieldsPanel(Workbench& workbench, QWidget* parent) : Panel(workbench, parent) {
   for (FieldKind kind :
        {FieldKind::Height, FieldKind::HeightMm, FieldKind::MaterialRemoved, FieldKind::Deviation,
-        FieldKind::KMax, FieldKind::KMin, FieldKind::MeanCurvature, FieldKind::GaussianCurvature}) {
+        FieldKind::KMax, FieldKind::KMin, FieldKind::MeanCurvature, FieldKind::GaussianCurvature,
+        FieldKind::CurvatureType, FieldKind::MaxToolRadius}) {
     auto* action = new QAction(tr("Compute %1").arg(kindTitle(kind)), this);
     action->setObjectName(QString("actionComputeField%1").arg(static_cast<int>(kind)));
     connect(action, &QAction::triggered, this, [this, kind] { compute(kind); });

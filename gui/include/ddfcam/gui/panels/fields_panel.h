@@ -25,6 +25,8 @@ enum class FieldKind {
   KMin,               ///< smaller principal curvature
   MeanCurvature,      ///< mean curvature
   GaussianCurvature,  ///< Gaussian curvature
+  CurvatureType,      ///< planning::curvatureTypeField: flat, convex, concave, saddle (0..3)
+  MaxToolRadius,      ///< planning::maxToolRadiusField: largest ball that does not gouge
 };
 
 /// @brief Lists the document's fields; selecting one colours the surface by it (PartView) and
