@@ -13,6 +13,7 @@
 #include <ddfcam/gui/panels/part_panel.h>
 #include <ddfcam/gui/panels/pick_panel.h>
 #include <ddfcam/gui/panels/simulation_panel.h>
+#include <ddfcam/gui/panels/streamlines_panel.h>
 #include <ddfcam/gui/part_scene.h>
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/plot_dock.h>
@@ -135,6 +136,7 @@ void MainWindow::registerDefaultPanels() {
   registerPanel(new FieldsPanel(*workbench_));
   registerPanel(new SimulationPanel(*workbench_));
   registerPanel(new PickPanel(*workbench_));
+  registerPanel(new StreamlinesPanel(*workbench_));
   if (auto* first = findChild<QDockWidget*>("panel_fields")) first->raise();
 }
 

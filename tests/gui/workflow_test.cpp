@@ -12,6 +12,7 @@
 #include <ddfcam/gui/panels/fields_panel.h>
 #include <ddfcam/gui/panels/pick_panel.h>
 #include <ddfcam/gui/panels/simulation_panel.h>
+#include <ddfcam/gui/panels/streamlines_panel.h>
 #include <ddfcam/gui/part_scene.h>
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/plot_dock.h>
@@ -54,6 +55,7 @@ class WorkflowTest : public QObject {
   void recoveryAfterSimulatedCrash();
   void groundPartShowsMaterialRemoved();
   void colourByPrincipalCurvature();
+  void clickSeedsAStreamlineThatIsDrawn();
 
  private:
   QAction* action(const char* name) { return f_.window->findChild<QAction*>(name); }
@@ -389,6 +391,47 @@ void WorkflowTest::colourByPrincipalCurvature() {
     QVERIFY2(std::abs(radius.values[i] - expected) <= 1e-4 * expected,
              qPrintable(QString("%1: %2 vs %3").arg(i).arg(radius.values[i]).arg(expected)));
   }
+}
+
+void WorkflowTest::clickSeedsAStreamlineThatIsDrawn() {
+  auto* streamlines = panel<ddfcam::gui::StreamlinesPanel>();
+  QVERIFY(streamlines != nullptr);
+  streamlines->setSeedByClick(true);
+  auto& view = *f_.window->view();
+  view.viewFrom(ddfcam::gui::ViewDirection::PlusZ);
+  const long long drawnBefore = f_.window->partView().scene().overlayCellCount("paths");
+  const std::size_t pathsBefore = project().paths.size();
+  QTest::mouseClick(&view, Qt::LeftButton, Qt::NoModifier, view.rect().center());
+  QVERIFY(f_.window->waitForJobs());  // the flow field is computed once, as a job
+  QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
+  QCOMPARE(project().paths.size(), pathsBefore + 1);
+  const auto& path = project().paths.back();
+  QVERIFY(path.poses.size() > 20);
+  // Drawn: one more poly-line in the path overlay.
+  QCOMPARE(f_.window->partView().scene().overlayCellCount("paths"), drawnBefore + 1);
+  // The contacts lie on the part (located on some face within a micrometre) and the line is
+  // continuous (steps of about a raster spacing).
+  const auto& ddf = *project().part;
+  for (std::size_t i = 0; i < path.poses.size(); i += 7) {
+    bool onSurface = false;
+    for (int face = 0; face < ddf.faceCount() && !onSurface; ++face) {
+      const auto at = ddfcam::ddf::locateOnFace(ddf, face, path.poses[i].contact);
+      onSurface =
+          at && at->bary.minCoeff() > -1e-9 && (at->point - path.poses[i].contact).norm() < 1e-3;
+    }
+    QVERIFY2(onSurface, qPrintable(QString("contact %1").arg(i)));
+    if (i > 0) QVERIFY((path.poses[i].contact - path.poses[i - 1].contact).norm() < 0.5);
+  }
+  // A family along the transverse line through the same pick: several passes w apart.
+  QVERIFY(streamlines->seedFamily());
+  QVERIFY(f_.window->waitForJobs());
+  QCOMPARE(project().paths.size(), pathsBefore + 2);
+  QVERIFY(project().paths.back().passStarts.size() >= 5);
+  // One undo removes the family again.
+  f_.window->findChild<QAction*>("actionUndo")->trigger();
+  QCOMPARE(project().paths.size(), pathsBefore + 1);
+  streamlines->setSeedByClick(false);
+  ddfcam::test::dumpFrame(view.renderImage(), "workbench_streamline");
 }
 
 QTEST_MAIN(WorkflowTest)
