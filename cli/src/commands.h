@@ -20,5 +20,6 @@ extern const Command kConvertCommand;
 extern const Command kExtractCommand;
 extern const Command kInfoCommand;
 extern const Command kDemoCommand;
+extern const Command kCurvatureCommand;  // section C
 
 }  // namespace ddfcam::cli

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Runs the ddfcam-cli executable on small inputs and checks exit codes, messages and outputs.
+#include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/io/ddf_file.h>
 #include <ddfcam/io/mesh_io.h>
 
@@ -8,6 +9,7 @@
 
 #include <sys/wait.h>
 #include <regex>
+#include <sstream>
 
 #include "io_test_support.h"
 
@@ -178,6 +180,127 @@ TEST(Cli, DemoWritesAGroundPart) {
   EXPECT_LT(*lo, 0.0f);
   EXPECT_GT(*hi, 0.0f);
   EXPECT_GT(readMesh(dir / "demo" / "demo.stl").triangles.size(), 1000u);
+}
+
+// --- ddfcam-cli curvature (section C) ---
+
+/// A CSV text as its header and rows of numbers (strtod, so "nan" reads as NaN).
+struct Csv {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+
+  std::size_t column(const std::string& name) const {
+    const auto it = std::find(header.begin(), header.end(), name);
+    EXPECT_NE(it, header.end()) << "no column " << name;
+    return static_cast<std::size_t>(it - header.begin());
+  }
+};
+
+Csv readCsv(const std::filesystem::path& path) {
+  std::istringstream in(test::readBytes(path));
+  Csv csv;
+  std::string line;
+  for (bool first = true; std::getline(in, line); first = false) {
+    std::istringstream cells(line);
+    std::vector<double> row;
+    for (std::string cell; std::getline(cells, cell, ',');) {
+      if (first)
+        csv.header.push_back(cell);
+      else
+        row.push_back(std::strtod(cell.c_str(), nullptr));
+    }
+    if (!first) csv.rows.push_back(row);
+  }
+  return csv;
+}
+
+/// NumberOfPoints of the Piece of a .vtp file.
+std::size_t vtpPointCount(const std::filesystem::path& path) {
+  std::smatch match;
+  const std::string text = test::readBytes(path);
+  if (!std::regex_search(text, match, std::regex("<Piece NumberOfPoints=\"([0-9]+)\""))) {
+    ADD_FAILURE() << "no Piece in " << path;
+    return 0;
+  }
+  return std::stoul(match[1]);
+}
+
+/// The numbers of the DataArray named @p name in a .vtp file.
+std::vector<double> vtpArray(const std::filesystem::path& path, const std::string& name) {
+  const std::string text = test::readBytes(path);
+  const std::string open = "Name=\"" + name + "\"";
+  const std::size_t at = text.find('>', text.find(open));
+  std::istringstream in(text.substr(at + 1, text.find('<', at) - at - 1));
+  std::vector<double> values;
+  for (double v; in >> v;) values.push_back(v);
+  return values;
+}
+
+TEST(Cli, CurvatureOfASphereIsOneOverTheRadiusAtEveryPoint) {
+  test::ScratchDir dir;
+  const ddf::GeneratedSurface part = ddf::spherePart({.radiusMm = 5.0, .subdivisions = 2, .m = 9});
+  writeDdf(part.ddf, dir / "sphere.ddf");
+  const auto vtp = dir / "k.vtp", csvPath = dir / "k.csv";
+  const CliRun run = cli(dir, {"curvature", (dir / "sphere.ddf").string(), "-o", vtp.string(),
+                               "--csv", csvPath.string()});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("convex"));
+  const std::size_t points = part.ddf.topology().pointCount();  // closed: every point has a copy
+  EXPECT_EQ(vtpPointCount(vtp), points);
+  const std::vector<double> vtpKMax = vtpArray(vtp, "k_max");
+  ASSERT_EQ(vtpKMax.size(), points);
+  for (const double k : vtpKMax) ASSERT_NEAR(k, 0.2, 2e-3);
+  const Csv csv = readCsv(csvPath);
+  ASSERT_EQ(csv.header.size(), 18u);
+  ASSERT_EQ(csv.rows.size(), points);
+  const std::size_t id = csv.column("point_id"), x = csv.column("x"), kMax = csv.column("k_max"),
+                    kMin = csv.column("k_min"), umbilic = csv.column("umbilic");
+  for (std::size_t r = 0; r < csv.rows.size(); ++r) {
+    const std::vector<double>& row = csv.rows[r];
+    ASSERT_EQ(row.size(), 18u) << "row " << r;
+    ASSERT_EQ(row[id], static_cast<double>(r));  // one row per raster point, in id order
+    const Eigen::Vector3d q(row[x], row[x + 1], row[x + 2]);
+    ASSERT_NEAR(q.norm(), 5.0, 1e-4) << "row " << r;   // raster points lie on the sphere
+    ASSERT_NEAR(row[kMax], 0.2, 2e-3) << "row " << r;  // convex from outside: +1/R
+    ASSERT_NEAR(row[kMin], 0.2, 2e-3) << "row " << r;
+    ASSERT_EQ(row[umbilic], 1.0) << "row " << r;
+  }
+}
+
+TEST(Cli, CurvatureOfACylinderFollowsTheAxisAndDefaultsTheOutputName) {
+  test::ScratchDir dir;
+  const ddf::GeneratedSurface part =
+      ddf::cylinderPart({.radiusMm = 2.0, .lengthMm = 4.0, .segments = 16, .rings = 4, .m = 9});
+  writeDdf(part.ddf, dir / "cyl.ddf");
+  const auto csvPath = dir / "cyl.csv";
+  const CliRun run = cli(dir, {"curvature", (dir / "cyl.ddf").string(), "--csv", csvPath.string()});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_EQ(vtpPointCount(dir / "cyl.vtp"), part.ddf.topology().pointCount());
+  const Csv csv = readCsv(csvPath);
+  ASSERT_EQ(csv.rows.size(), part.ddf.topology().pointCount());
+  const std::size_t kMax = csv.column("k_max"), kMin = csv.column("k_min"),
+                    dirMaxZ = csv.column("dir_max_z"), dirMinZ = csv.column("dir_min_z");
+  for (const std::vector<double>& row : csv.rows) {
+    ASSERT_NEAR(row[kMax], 0.5, 1e-3);  // 1/r around the axis
+    ASSERT_NEAR(row[kMin], 0.0, 1e-3);  // straight along it
+    ASSERT_NEAR(row[dirMaxZ], 0.0, 1e-2);
+    ASSERT_NEAR(std::abs(row[dirMinZ]), 1.0, 1e-3);
+  }
+}
+
+TEST(Cli, CurvatureErrorsGiveOneLine) {
+  test::ScratchDir dir;
+  const std::string missing = (dir / "absent.ddf").string();
+  expectOneLineError(cli(dir, {"curvature", missing, "-o", (dir / "x.vtp").string()}), 1,
+                     "absent.ddf");
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.vtp"));
+  expectOneLineError(cli(dir, {"curvature", missing, "-o", "x.stl"}), 2, "must end in .vtp");
+  expectOneLineError(cli(dir, {"curvature", missing, "--step", "0"}), 2,
+                     "--step expects an integer");
+  expectOneLineError(cli(dir, {"curvature"}), 2, "'curvature' needs an input part");
+  const CliRun help = cli(dir, {"curvature", "--help"});
+  EXPECT_EQ(help.exitCode, 0);
+  EXPECT_THAT(help.out, HasSubstr("usage: ddfcam-cli curvature"));
 }
 
 }  // namespace
