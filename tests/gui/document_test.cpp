@@ -104,16 +104,16 @@ class DocumentTest : public QObject {
 
 void DocumentTest::resetValidatesFirst() {
   Document document;
-  document.reset(planeProject(), "/tmp/plane.ddfproj");
+  document.reset(planeProject(), "projects/plane.ddfproj");
   const planning::Project before = document.project();
   QSignalSpy changed(&document, &Document::changed);
   QSignalSpy path(&document, &Document::filePathChanged);
 
   planning::Project bad;
   bad.fields.push_back({"orphan", "", false, {1.0f}});  // a field without a part
-  QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput, document.reset(bad, "/tmp/other.ddfproj"));
+  QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput, document.reset(bad, "projects/other.ddfproj"));
   QVERIFY(planning::projectsEqual(document.project(), before));
-  QCOMPARE(document.filePath(), QString("/tmp/plane.ddfproj"));
+  QCOMPARE(document.filePath(), QString("projects/plane.ddfproj"));
   QCOMPARE(changed.count(), 0);
   QCOMPARE(path.count(), 0);
 }
@@ -256,9 +256,9 @@ void DocumentTest::modifiedFlagFollowsEditUndoSaveRedo() {
   document.undoStack()->redo();
   QVERIFY(document.isModified());
 
-  document.markSaved("/tmp/saved.ddfproj");
+  document.markSaved("projects/saved.ddfproj");
   QVERIFY(!document.isModified());
-  QCOMPARE(document.filePath(), QString("/tmp/saved.ddfproj"));
+  QCOMPARE(document.filePath(), QString("projects/saved.ddfproj"));
   QCOMPARE(path.count(), 1);
   document.undoStack()->undo();
   QVERIFY(document.isModified());
@@ -277,14 +277,14 @@ void DocumentTest::modifiedFlagFollowsEditUndoSaveRedo() {
 
 void DocumentTest::markModifiedSurvivesUndo() {
   Document document;
-  document.reset(planeProject(), "/tmp/recovered.ddfproj");
+  document.reset(planeProject(), "projects/recovered.ddfproj");
   document.markModified();  // e.g. a recovered project: differs from its file
   QVERIFY(document.isModified());
   document.push(
       std::make_unique<AddFieldCommand>(document, constantField(document.project(), "f", 1)));
   document.undoStack()->undo();
   QVERIFY(document.isModified());  // still the recovered state, not the file's
-  document.markSaved("/tmp/recovered.ddfproj");
+  document.markSaved("projects/recovered.ddfproj");
   QVERIFY(!document.isModified());
 }
 
@@ -354,8 +354,8 @@ void DocumentTest::budgetKeepsReachableSavedState() {
     document.push(std::make_unique<SetHeightsCommand>(document, "step", states.back()));
   };
   for (int i = 0; i < 4; ++i) step(i);
-  document.markSaved("/tmp/s.ddfproj");  // saved at state 4
-  for (int i = 4; i < 6; ++i) step(i);   // history holds states 3..6
+  document.markSaved("projects/s.ddfproj");  // saved at state 4
+  for (int i = 4; i < 6; ++i) step(i);       // history holds states 3..6
   QVERIFY(document.isModified());
   document.undoStack()->undo();
   document.undoStack()->undo();

@@ -117,7 +117,7 @@ void RecoveryTest::timerAutosavesAndForgetsAfterSave() {
 }
 
 void RecoveryTest::crashLeavesFileThatIsRecoveredExactly() {
-  const QString original = dir_->path() + "/work/part.ddfproj";
+  const QString original = dir_->path() + "/projects/part.ddfproj";
   planning::Project autosaved;
   QString recoveryFile;
   const QDateTime before = QDateTime::currentDateTimeUtc().addSecs(-1);

@@ -24,7 +24,7 @@ ddf::DisplacementField smallPlane() {
 Project smallProject() {
   Project p;
   p.partName = "plane";
-  p.sourcePath = "/tmp/plane.stl";
+  p.sourcePath = "parts/plane.stl";
   p.part = smallPlane();
   const std::size_t n = p.part->allHeights().size();
   p.designMesh =
