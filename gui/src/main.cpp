@@ -72,6 +72,43 @@ int writeScreenshot(ddfcam::gui::MainWindow& window, const QString& out) {
   return 0;
 }
 
+/// Batch mode (--screenshot): nothing modal; errors go to stderr, since the console dock takes
+/// over the log, and set @p failed.
+ddfcam::gui::WorkbenchDialogs batchDialogs(bool& failed) {
+  ddfcam::gui::WorkbenchDialogs dialogs;
+  dialogs.error = [&failed](const QString& title, const QString& message) {
+    failed = true;
+    std::fprintf(stderr, "ddfcam: %s: %s\n", qPrintable(title), qPrintable(message));
+  };
+  dialogs.offerRecovery = [](const QStringList&) { return -1; };
+  dialogs.unsavedChanges = [] { return ddfcam::gui::UnsavedChoice::Discard; };
+  return dialogs;
+}
+
+/// Creates the window on @p options' part, then either writes the screenshot or runs the UI.
+int runWorkbench(QApplication& app, const Options& options) {
+  bool failed = false;
+  ddfcam::gui::WorkbenchDialogs dialogs;
+  if (options.screenshot) dialogs = batchDialogs(failed);
+  ddfcam::gui::WorkbenchOptions workbench;
+  workbench.openDemoAtStart = !options.part;
+  std::unique_ptr<ddfcam::gui::MainWindow> window;
+  try {
+    window = std::make_unique<ddfcam::gui::MainWindow>(dialogs, workbench);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ddfcam: cannot start the workbench: %s\n",
+                 ddfcam::unrollMessage(e).c_str());
+    return 1;
+  }
+  if (options.part) window->openPath(QString::fromStdString(*options.part));
+  if (options.screenshot) {
+    if (!window->waitForJobs(600'000) || failed) return 1;
+    return writeScreenshot(*window, QString::fromStdString(*options.screenshot));
+  }
+  window->show();
+  return app.exec();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -97,32 +134,5 @@ int main(int argc, char** argv) {
   QApplication::setOrganizationName("ddfcam");
   ddfcam::gui::VtkErrorMonitor::install();
 
-  ddfcam::gui::WorkbenchDialogs dialogs;
-  ddfcam::gui::WorkbenchOptions workbench;
-  workbench.openDemoAtStart = !options->part;
-  bool failed = false;
-  if (options->screenshot) {
-    // Batch mode: nothing modal; errors go to stderr (the console dock takes over the log).
-    dialogs.error = [&failed](const QString& title, const QString& message) {
-      failed = true;
-      std::fprintf(stderr, "ddfcam: %s: %s\n", qPrintable(title), qPrintable(message));
-    };
-    dialogs.offerRecovery = [](const QStringList&) { return -1; };
-    dialogs.unsavedChanges = [] { return ddfcam::gui::UnsavedChoice::Discard; };
-  }
-  std::unique_ptr<ddfcam::gui::MainWindow> window;
-  try {
-    window = std::make_unique<ddfcam::gui::MainWindow>(dialogs, workbench);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "ddfcam: cannot start the workbench: %s\n",
-                 ddfcam::unrollMessage(e).c_str());
-    return 1;
-  }
-  if (options->part) window->openPath(QString::fromStdString(*options->part));
-  if (options->screenshot) {
-    if (!window->waitForJobs(600'000) || failed) return 1;
-    return writeScreenshot(*window, QString::fromStdString(*options->screenshot));
-  }
-  window->show();
-  return app.exec();
+  return runWorkbench(app, *options);
 }

@@ -29,22 +29,7 @@ ddf::DisplacementField sampleField(int m = 6) {
   return field;
 }
 
-bool sameBits(const void* a, const void* b, std::size_t bytes) {
-  return std::memcmp(a, b, bytes) == 0;
-}
-
-void expectBitwiseEqual(const ddf::DisplacementField& a, const ddf::DisplacementField& b) {
-  ASSERT_EQ(a.vertexCount(), b.vertexCount());
-  ASSERT_EQ(a.faceCount(), b.faceCount());
-  ASSERT_EQ(a.resolution(), b.resolution());
-  for (int v = 0; v < a.vertexCount(); ++v) {
-    EXPECT_TRUE(sameBits(a.position(v).data(), b.position(v).data(), 24)) << "position " << v;
-    EXPECT_TRUE(sameBits(a.vector(v).data(), b.vector(v).data(), 24)) << "vector " << v;
-  }
-  for (int f = 0; f < a.faceCount(); ++f) EXPECT_EQ(a.faceVertices(f), b.faceVertices(f)) << f;
-  ASSERT_EQ(a.allHeights().size(), b.allHeights().size());
-  EXPECT_TRUE(sameBits(a.allHeights().data(), b.allHeights().data(), 4 * a.allHeights().size()));
-}
+using test::expectBitwiseEqual;
 
 TEST(DdfFile, Crc32MatchesTheStandardCheckValue) {
   const std::string check = "123456789";

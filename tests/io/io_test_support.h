@@ -2,10 +2,12 @@
 // Helpers for the io tests: scratch directories and file writing.
 #pragma once
 
+#include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/error.h>
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -13,6 +15,25 @@
 #include <string>
 
 namespace ddfcam::test {
+
+/// True if the @p bytes bytes at @p a and @p b are identical (NaN payloads and -0 included).
+inline bool sameBits(const void* a, const void* b, std::size_t bytes) {
+  return bytes == 0 || std::memcmp(a, b, bytes) == 0;
+}
+
+/// Expects two fields to be bit-identical: positions, vectors, face vertex order, heights.
+inline void expectBitwiseEqual(const ddf::DisplacementField& a, const ddf::DisplacementField& b) {
+  ASSERT_EQ(a.vertexCount(), b.vertexCount());
+  ASSERT_EQ(a.faceCount(), b.faceCount());
+  ASSERT_EQ(a.resolution(), b.resolution());
+  for (int v = 0; v < a.vertexCount(); ++v) {
+    EXPECT_TRUE(sameBits(a.position(v).data(), b.position(v).data(), 24)) << "position " << v;
+    EXPECT_TRUE(sameBits(a.vector(v).data(), b.vector(v).data(), 24)) << "vector " << v;
+  }
+  for (int f = 0; f < a.faceCount(); ++f) EXPECT_EQ(a.faceVertices(f), b.faceVertices(f)) << f;
+  ASSERT_EQ(a.allHeights().size(), b.allHeights().size());
+  EXPECT_TRUE(sameBits(a.allHeights().data(), b.allHeights().data(), 4 * a.allHeights().size()));
+}
 
 /// A fresh directory under the system temp dir, removed with its content on destruction.
 class ScratchDir {

@@ -20,19 +20,6 @@ namespace {
 using test::sameBits;
 using ::testing::HasSubstr;
 
-void expectSameField(const ddf::DisplacementField& a, const ddf::DisplacementField& b) {
-  ASSERT_EQ(a.vertexCount(), b.vertexCount());
-  ASSERT_EQ(a.faceCount(), b.faceCount());
-  ASSERT_EQ(a.resolution(), b.resolution());
-  for (int v = 0; v < a.vertexCount(); ++v) {
-    EXPECT_TRUE(sameBits(a.position(v).data(), b.position(v).data(), 24)) << "position " << v;
-    EXPECT_TRUE(sameBits(a.vector(v).data(), b.vector(v).data(), 24)) << "vector " << v;
-  }
-  for (int f = 0; f < a.faceCount(); ++f) EXPECT_EQ(a.faceVertices(f), b.faceVertices(f)) << f;
-  ASSERT_EQ(a.allHeights().size(), b.allHeights().size());
-  EXPECT_TRUE(sameBits(a.allHeights().data(), b.allHeights().data(), 4 * a.allHeights().size()));
-}
-
 template <class T>
 bool sameVector(const std::vector<T>& a, const std::vector<T>& b) {
   return a.size() == b.size() && sameBits(a.data(), b.data(), a.size() * sizeof(T));
@@ -56,7 +43,7 @@ void expectSameProject(const planning::Project& a, const planning::Project& b) {
   EXPECT_EQ(a.partName, b.partName);
   EXPECT_EQ(a.sourcePath, b.sourcePath);
   ASSERT_EQ(a.part.has_value(), b.part.has_value());
-  if (a.part) expectSameField(*a.part, *b.part);
+  if (a.part) test::expectBitwiseEqual(*a.part, *b.part);
   ASSERT_EQ(a.designMesh.has_value(), b.designMesh.has_value());
   if (a.designMesh) {
     EXPECT_EQ(a.designMesh->triangles, b.designMesh->triangles);
@@ -87,7 +74,7 @@ void expectSameProject(const planning::Project& a, const planning::Project& b) {
   ASSERT_EQ(a.surfaces.size(), b.surfaces.size());
   for (std::size_t i = 0; i < a.surfaces.size(); ++i) {
     EXPECT_EQ(a.surfaces[i].name, b.surfaces[i].name);
-    expectSameField(a.surfaces[i].ddf, b.surfaces[i].ddf);
+    test::expectBitwiseEqual(a.surfaces[i].ddf, b.surfaces[i].ddf);
   }
 }
 

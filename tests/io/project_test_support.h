@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "io_test_support.h"
+
 #include <Eigen/Geometry>
 
 #include <bit>
@@ -19,10 +21,6 @@
 #include <string>
 
 namespace ddfcam::test {
-
-inline bool sameBits(const void* a, const void* b, std::size_t bytes) {
-  return bytes == 0 || std::memcmp(a, b, bytes) == 0;
-}
 
 /// A NaN with a payload, to check that the exact bit pattern survives.
 inline float payloadNaN() {

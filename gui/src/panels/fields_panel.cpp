@@ -138,9 +138,20 @@ FieldsPanel::FieldsPanel(Workbench& workbench, QWidget* parent) : Panel(workbenc
 }
 
 void FieldsPanel::buildControls() {
+  auto* layout = new QVBoxLayout(this);
+  layout->addWidget(buildFieldList(), 1);
+  layout->addLayout(buildListButtons());
+  layout->addLayout(buildColourControls());
+}
+
+QListWidget* FieldsPanel::buildFieldList() {
   list_ = new QListWidget(this);
   list_->setObjectName("fieldList");
   connect(list_, &QListWidget::currentRowChanged, this, [this] { onSelectionChanged(); });
+  return list_;
+}
+
+QHBoxLayout* FieldsPanel::buildListButtons() {
   auto* computeButton = new QToolButton(this);
   computeButton->setObjectName("computeFieldButton");
   computeButton->setText(tr("Compute"));
@@ -160,7 +171,10 @@ void FieldsPanel::buildControls() {
   buttons->addWidget(computeButton);
   buttons->addWidget(remove_);
   buttons->addStretch(1);
+  return buttons;
+}
 
+QFormLayout* FieldsPanel::buildColourControls() {
   colourMap_ = new QComboBox(this);
   colourMap_->setObjectName("colourMapCombo");
   for (ColourMap map : allColourMaps())
@@ -195,10 +209,7 @@ void FieldsPanel::buildControls() {
   form->addRow(autoRange_);
   form->addRow(tr("Minimum"), min_);
   form->addRow(tr("Maximum"), max_);
-  auto* layout = new QVBoxLayout(this);
-  layout->addWidget(list_, 1);
-  layout->addLayout(buttons);
-  layout->addLayout(form);
+  return form;
 }
 
 bool FieldsPanel::compute(FieldKind kind) {

@@ -10,6 +10,8 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
+class QHBoxLayout;
 class QListWidget;
 class QPushButton;
 
@@ -49,6 +51,9 @@ class FieldsPanel : public Panel {
 
  private:
   void buildControls();
+  QListWidget* buildFieldList();
+  QHBoxLayout* buildListButtons();
+  QFormLayout* buildColourControls();
   void refreshList();
   void refreshDisplayControls();
   void updateHistogram();
