@@ -192,7 +192,10 @@ void printSummary(const CurvatureResult& r, const SampledMesh& s) {
     ++types[static_cast<std::size_t>(r.type[at])];
     umbilic += r.curvature.umbilic[at];
   }
-  std::printf("  raster points: %zu, difference step d = %d\n", points, r.curvature.step);
+  if (r.curvature.method == planning::CurvatureMethod::VertexQuadricFit)
+    std::printf("  raster points: %zu, vertex quadric fits (the faces are flat)\n", points);
+  else
+    std::printf("  raster points: %zu, difference step d = %d\n", points, r.curvature.step);
   std::printf("  k_max %s 1/mm, k_min %s 1/mm\n", range(r.curvature.kMax, s).c_str(),
               range(r.curvature.kMin, s).c_str());
   std::printf("  types: ");

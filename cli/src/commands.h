@@ -21,5 +21,6 @@ extern const Command kExtractCommand;
 extern const Command kInfoCommand;
 extern const Command kDemoCommand;
 extern const Command kCurvatureCommand;  // section C
+extern const Command kPlanCommand;       // section L
 
 }  // namespace ddfcam::cli

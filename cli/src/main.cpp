@@ -15,9 +15,9 @@ namespace {
 
 using ddfcam::cli::Command;
 
-constexpr std::array<const Command*, 5> kCommands = {
-    &ddfcam::cli::kConvertCommand, &ddfcam::cli::kExtractCommand, &ddfcam::cli::kInfoCommand,
-    &ddfcam::cli::kDemoCommand, &ddfcam::cli::kCurvatureCommand};
+constexpr std::array<const Command*, 6> kCommands = {
+    &ddfcam::cli::kConvertCommand, &ddfcam::cli::kExtractCommand,   &ddfcam::cli::kInfoCommand,
+    &ddfcam::cli::kDemoCommand,    &ddfcam::cli::kCurvatureCommand, &ddfcam::cli::kPlanCommand};
 
 void printUsage(std::FILE* out) {
   std::fprintf(out,

@@ -12,6 +12,7 @@
 #include <ddfcam/gui/panels/fields_panel.h>
 #include <ddfcam/gui/panels/part_panel.h>
 #include <ddfcam/gui/panels/pick_panel.h>
+#include <ddfcam/gui/panels/segmentation_panel.h>
 #include <ddfcam/gui/panels/simulation_panel.h>
 #include <ddfcam/gui/panels/streamlines_panel.h>
 #include <ddfcam/gui/part_scene.h>
@@ -137,6 +138,7 @@ void MainWindow::registerDefaultPanels() {
   registerPanel(new SimulationPanel(*workbench_));
   registerPanel(new PickPanel(*workbench_));
   registerPanel(new StreamlinesPanel(*workbench_));
+  registerPanel(new SegmentationPanel(*workbench_));
   if (auto* first = findChild<QDockWidget*>("panel_fields")) first->raise();
 }
 

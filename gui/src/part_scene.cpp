@@ -329,6 +329,10 @@ std::vector<std::string> PartScene::overlayNames() const {
   return names;  // std::map keeps them sorted
 }
 
+vtkPolyData* PartScene::overlayData(const std::string& name) const {
+  return mapperOf(overlayActor(name, "overlayData"))->GetInput();
+}
+
 long long PartScene::overlayCellCount(const std::string& name) const {
   vtkPolyData* data = mapperOf(overlayActor(name, "overlayCellCount"))->GetInput();
   return data ? static_cast<long long>(data->GetNumberOfCells()) : 0;

@@ -189,17 +189,64 @@ planning::ScalarField readField(PayloadReader& in) {
   return field;
 }
 
+void putPlan(std::string& out, const planning::RegionPlan& plan) {
+  putI32(out, plan.tool);
+  putI32(out, static_cast<int>(plan.flowSource));
+  putVec3(out, plan.fixedDirection);
+  out += static_cast<char>(plan.smoothField ? 1 : 0);
+  putF64(out, plan.smoothnessWeight);
+  putI32(out, static_cast<int>(plan.spacingMode));
+  putF64(out, plan.spacingMm);
+  putF64(out, plan.scallopToleranceMm);
+  putI32(out, plan.feedSign);
+  putI32(out, static_cast<int>(plan.linking));
+  putCount(out, plan.strokes.size());
+  for (const std::vector<ddf::Vec3>& stroke : plan.strokes) {
+    putCount(out, stroke.size());
+    for (const ddf::Vec3& point : stroke) putVec3(out, point);
+  }
+}
+
+// Enum values are stored as read; validateProject rejects unknown ones, naming the region.
+planning::RegionPlan readPlan(PayloadReader& in, const std::string& region) {
+  planning::RegionPlan plan;
+  plan.tool = in.i32("plan tool index");
+  plan.flowSource = static_cast<planning::FlowFieldSource>(in.i32("plan flow source"));
+  plan.fixedDirection = readVec3(in, "plan fixed direction");
+  const std::uint8_t smooth = in.u8("plan smoothing flag");
+  if (smooth > 1)
+    in.fail("region '" + region + "': smoothing flag " + std::to_string(smooth) +
+            " is neither 0 nor 1");
+  plan.smoothField = smooth == 1;
+  plan.smoothnessWeight = in.f64("plan smoothness weight");
+  plan.spacingMode = static_cast<planning::SpacingMode>(in.i32("plan spacing mode"));
+  plan.spacingMm = in.f64("plan spacing");
+  plan.scallopToleranceMm = in.f64("plan scallop tolerance");
+  plan.feedSign = in.i32("plan feed sign");
+  plan.linking = static_cast<planning::LinkingOrder>(in.i32("plan linking order"));
+  // An empty stroke takes 8 bytes, which bounds the stroke count before allocating.
+  plan.strokes.resize(in.count(8, "plan stroke"));
+  for (std::vector<ddf::Vec3>& stroke : plan.strokes) {
+    stroke.resize(in.count(24, "plan stroke point"));
+    for (ddf::Vec3& point : stroke) point = readVec3(in, "plan stroke point");
+  }
+  return plan;
+}
+
 void putRegion(std::string& out, const planning::Region& region) {
   putString(out, region.name);
   for (const float c : region.color) putF32(out, c);
   putIntList(out, region.faces);
+  putPlan(out, region.plan);
 }
 
-planning::Region readRegion(PayloadReader& in) {
+planning::Region readRegion(PayloadReader& in, std::uint32_t formatVersion) {
   planning::Region region;
   region.name = in.string("region name");
   for (float& c : region.color) c = in.f32("region colour");
   region.faces = readIntList(in, "region faces");
+  // Version 1 regions carry no plan; they get the default one.
+  if (formatVersion >= 2) region.plan = readPlan(in, region.name);
   return region;
 }
 

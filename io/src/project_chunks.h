@@ -22,6 +22,12 @@ inline constexpr std::string_view kTagPath = "PATH";
 inline constexpr std::string_view kTagState = "STAT";
 inline constexpr std::string_view kTagSurface = "SURF";
 
+/// @brief Whether @p tag names an optional chunk: its first character is a lower-case ASCII
+/// letter (see project_file.h). A reader skips optional chunks it does not know.
+inline bool isOptionalChunkTag(std::string_view tag) {
+  return !tag.empty() && tag.front() >= 'a' && tag.front() <= 'z';
+}
+
 /// @brief Bounds-checked sequential reader of one chunk payload. Every read checks the bytes
 /// left first, and counts are checked against them before anything is allocated, so hostile
 /// lengths fail with a message instead of a huge allocation.
@@ -77,7 +83,8 @@ void putString(std::string& out, std::string_view text);
 void readProjectInfo(PayloadReader& in, planning::Project& project);
 ddf::TriangleMesh readDesignMesh(PayloadReader& in);
 planning::ScalarField readField(PayloadReader& in);
-planning::Region readRegion(PayloadReader& in);
+/// @param formatVersion version of the file: 1 (no plan, the default plan is used) or 2.
+planning::Region readRegion(PayloadReader& in, std::uint32_t formatVersion);
 planning::Tool readTool(PayloadReader& in);
 planning::ToolPath readPath(PayloadReader& in);
 planning::SimulationState readState(PayloadReader& in);

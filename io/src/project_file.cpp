@@ -5,6 +5,9 @@
 #include <ddfcam/error.h>
 #include <ddfcam/io/ddf_file.h>
 
+#include <ddfcam/log.h>
+
+#include "byte_codec.h"
 #include "file_access.h"
 #include "project_chunks.h"
 #include "project_layout.h"
@@ -26,10 +29,16 @@ ddf::DisplacementField decodeEmbeddedDdf(std::string_view bytes, const PayloadRe
   }
 }
 
-/// Fills a Project chunk by chunk; enforces the chunk order rules of format version 1.
+/// Fills a Project chunk by chunk; enforces the chunk order rules and skips (and reports) the
+/// optional chunks it does not know.
 class ProjectDecoder {
  public:
-  explicit ProjectDecoder(const std::string& sourceName) : name_(sourceName) {}
+  ProjectDecoder(const std::string& sourceName, std::uint32_t formatVersion,
+                 ProjectReadReport& report)
+      : name_(sourceName), version_(formatVersion), report_(report) {
+    report_ = ProjectReadReport{};
+    report_.formatVersion = formatVersion;
+  }
 
   void add(const ChunkView& chunk) {
     PayloadReader in(chunk.payload, name_ + ": " + chunk.label());
@@ -66,7 +75,7 @@ class ProjectDecoder {
     if (tag == detail::kTagField) {
       project_.fields.push_back(detail::readField(in));
     } else if (tag == detail::kTagRegion) {
-      project_.regions.push_back(detail::readRegion(in));
+      project_.regions.push_back(detail::readRegion(in, version_));
     } else if (tag == detail::kTagTool) {
       project_.tools.push_back(detail::readTool(in));
     } else if (tag == detail::kTagPath) {
@@ -78,13 +87,25 @@ class ProjectDecoder {
       surface.name = in.string("surface name");
       surface.ddf = decodeEmbeddedDdf(in.rest(), in, "surface '" + surface.name + "'");
       project_.surfaces.push_back(std::move(surface));
+    } else if (detail::isOptionalChunkTag(tag)) {
+      skip(in);
     } else {
       in.fail("unknown chunk type in format version " + std::to_string(kProjectFormatVersion) +
               " (damaged file, or written by an incompatible program)");
     }
   }
 
+  // A later ddfcam added data this build does not know and marked it safe to ignore.
+  void skip(PayloadReader& in) {
+    in.rest();
+    report_.skippedChunks.push_back(in.context());
+    log(LogLevel::Warning, in.context() + ": optional chunk of a newer ddfcam skipped (" +
+                               "its content is not loaded and is lost on saving)");
+  }
+
   const std::string& name_;
+  std::uint32_t version_;
+  ProjectReadReport& report_;
   planning::Project project_;
   bool sawProject_ = false;
 };
@@ -116,9 +137,13 @@ std::string encodeProject(const planning::Project& project) {
   return encoder.finish();
 }
 
-planning::Project decodeProject(std::string_view bytes, const std::string& sourceName) {
-  ProjectDecoder decoder(sourceName);
-  for (const ChunkView& chunk : detail::splitProjectChunks(bytes, sourceName)) decoder.add(chunk);
+planning::Project decodeProject(std::string_view bytes, const std::string& sourceName,
+                                ProjectReadReport* report) {
+  const std::vector<ChunkView> chunks = detail::splitProjectChunks(bytes, sourceName);
+  ProjectReadReport local;
+  // splitProjectChunks has checked the header, so the version is there and supported.
+  ProjectDecoder decoder(sourceName, detail::getU32(bytes.data() + 8), report ? *report : local);
+  for (const ChunkView& chunk : chunks) decoder.add(chunk);
   return decoder.finish();
 }
 
@@ -127,8 +152,8 @@ void writeProject(const planning::Project& project, const std::filesystem::path&
   detail::writeFileAtomically(path, bytes);
 }
 
-planning::Project readProject(const std::filesystem::path& path) {
-  return decodeProject(detail::readFileBytes(path), path.string());
+planning::Project readProject(const std::filesystem::path& path, ProjectReadReport* report) {
+  return decodeProject(detail::readFileBytes(path), path.string(), report);
 }
 
 }  // namespace ddfcam::io

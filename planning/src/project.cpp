@@ -3,7 +3,9 @@
 #include <ddfcam/error.h>
 #include <ddfcam/planning/project.h>
 
+#include <cmath>
 #include <cstring>
+#include <sstream>
 #include <string>
 #include <type_traits>
 
@@ -32,6 +34,57 @@ void checkRegion(const Region& region, int faceCount) {
                          std::to_string(region.faces[i - 1]) +
                          " (faces must be ascending, unique)");
   }
+}
+
+bool finiteVec(const ddf::Vec3& v) {
+  return v.allFinite();
+}
+
+std::string text(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+void checkPlanEnums(const RegionPlan& plan, const std::string& item) {
+  const int source = static_cast<int>(plan.flowSource);
+  if (source < 0 || source > static_cast<int>(FlowFieldSource::UserStrokes))
+    throw InvalidInput(item + ": unknown flow field source " + std::to_string(source));
+  const int spacing = static_cast<int>(plan.spacingMode);
+  if (spacing < 0 || spacing > static_cast<int>(SpacingMode::ScallopTolerance))
+    throw InvalidInput(item + ": unknown spacing mode " + std::to_string(spacing));
+  const int linking = static_cast<int>(plan.linking);
+  if (linking < 0 || linking > static_cast<int>(LinkingOrder::OneDirection))
+    throw InvalidInput(item + ": unknown linking order " + std::to_string(linking));
+}
+
+void checkPlanGeometry(const RegionPlan& plan, const std::string& item) {
+  if (!finiteVec(plan.fixedDirection) || plan.fixedDirection.squaredNorm() == 0.0)
+    throw InvalidInput(item + ": the fixed flow direction must be finite and non-zero");
+  for (std::size_t s = 0; s < plan.strokes.size(); ++s)
+    for (std::size_t p = 0; p < plan.strokes[s].size(); ++p)
+      if (!finiteVec(plan.strokes[s][p]))
+        throw InvalidInput(item + ": stroke " + std::to_string(s) + " point " + std::to_string(p) +
+                           " is not finite");
+}
+
+void checkPlan(const RegionPlan& plan, const std::string& regionItem, std::size_t toolCount) {
+  const std::string item = regionItem + " plan";
+  if (plan.tool < -1 || (plan.tool >= 0 && static_cast<std::size_t>(plan.tool) >= toolCount))
+    throw InvalidInput(item + ": tool index " + std::to_string(plan.tool) + " out of range (" +
+                       std::to_string(toolCount) + " tools; -1 for none)");
+  checkPlanEnums(plan, item);
+  checkPlanGeometry(plan, item);
+  if (!(plan.smoothnessWeight >= 0.0) || !std::isfinite(plan.smoothnessWeight))
+    throw InvalidInput(item + ": smoothness weight " + text(plan.smoothnessWeight) +
+                       " must be finite and >= 0");
+  if (!(plan.spacingMm > 0.0) || !std::isfinite(plan.spacingMm))
+    throw InvalidInput(item + ": spacing " + text(plan.spacingMm) + " mm must be finite and > 0");
+  if (!(plan.scallopToleranceMm > 0.0) || !std::isfinite(plan.scallopToleranceMm))
+    throw InvalidInput(item + ": scallop tolerance " + text(plan.scallopToleranceMm) +
+                       " mm must be finite and > 0");
+  if (plan.feedSign != 1 && plan.feedSign != -1)
+    throw InvalidInput(item + ": feed sign " + std::to_string(plan.feedSign) + " must be +1 or -1");
 }
 
 void checkPath(const ToolPath& path, std::size_t toolCount) {
@@ -79,7 +132,10 @@ void checkPartItems(const Project& project) {
     checkLayout(quoted("field", field.name), field.values.size(), values);
   for (const SimulationState& state : project.states)
     checkLayout(quoted("state", state.name), state.heights.size(), values);
-  for (const Region& region : project.regions) checkRegion(region, part.faceCount());
+  for (const Region& region : project.regions) {
+    checkRegion(region, part.faceCount());
+    checkPlan(region.plan, quoted("region", region.name), project.tools.size());
+  }
 }
 
 // Bitwise equality of contiguous trivially copyable values: NaN equals NaN with the same
@@ -156,9 +212,23 @@ bool sameField(const ScalarField& a, const ScalarField& b) {
          sameBits(a.values, b.values);
 }
 
+bool sameStroke(const std::vector<ddf::Vec3>& a, const std::vector<ddf::Vec3>& b) {
+  return sameEach(a, b, [](const ddf::Vec3& p, const ddf::Vec3& q) { return sameBits(p, q); });
+}
+
+bool samePlan(const RegionPlan& a, const RegionPlan& b) {
+  return a.tool == b.tool && a.flowSource == b.flowSource &&
+         sameBits(a.fixedDirection, b.fixedDirection) &&
+         sameEach(a.strokes, b.strokes, sameStroke) && a.smoothField == b.smoothField &&
+         sameBits(a.smoothnessWeight, b.smoothnessWeight) && a.spacingMode == b.spacingMode &&
+         sameBits(a.spacingMm, b.spacingMm) &&
+         sameBits(a.scallopToleranceMm, b.scallopToleranceMm) && a.feedSign == b.feedSign &&
+         a.linking == b.linking;
+}
+
 bool sameRegion(const Region& a, const Region& b) {
   return a.name == b.name && a.faces == b.faces &&
-         sameBits(a.color.data(), b.color.data(), a.color.size());
+         sameBits(a.color.data(), b.color.data(), a.color.size()) && samePlan(a.plan, b.plan);
 }
 
 bool sameState(const SimulationState& a, const SimulationState& b) {

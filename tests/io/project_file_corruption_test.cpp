@@ -99,9 +99,9 @@ TEST(ProjectFileCorruption, HeaderProblemsAreNamed) {
   EXPECT_THAT(decodeError(encodeDdf(ddf::planePatch(params).ddf)),
               HasSubstr("it is a .ddf field file"));
   std::string newer = bytes;
-  test::putLeAt(newer, 8, 2, 4);
+  test::putLeAt(newer, 8, 3, 4);
   const std::string newerMessage =
-      "p.ddfproj: written by a newer ddfcam (format version 2, this build reads up to 1)";
+      "p.ddfproj: written by a newer ddfcam (format version 3, this build reads up to 2)";
   EXPECT_THAT(decodeError(newer), HasSubstr(newerMessage));
   EXPECT_THAT(decodeError(test::resealed(newer)), HasSubstr(newerMessage));
   std::string zero = bytes;
@@ -120,7 +120,7 @@ TEST(ProjectFileCorruption, UnknownAndMisplacedChunksAreRejected) {
   unknown.replace(chunkOffset(bytes, 3), 4, "TOOX");
   const std::string message = decodeError(test::resealed(unknown));
   EXPECT_THAT(message, HasSubstr("chunk 4 ('TOOX')"));
-  EXPECT_THAT(message, HasSubstr("unknown chunk type in format version 1"));
+  EXPECT_THAT(message, HasSubstr("unknown chunk type in format version 2"));
   EXPECT_THAT(decodeError(forged({})), HasSubstr("no 'PROJ' chunk"));
   EXPECT_THAT(decodeError(forged({{"TOOL", ""}, {"PROJ", infoPayload()}})),
               HasSubstr("the first chunk must be 'PROJ'"));
@@ -190,6 +190,44 @@ TEST(ProjectFileCorruption, InvalidValuesWithAValidChecksumAreNamed) {
   field[4 + 1 + 4] = 2;
   EXPECT_THAT(decodeError(forged({{"PROJ", infoPayload()}, {"FELD", field}})),
               HasSubstr("signed flag 2 is neither 0 nor 1"));
+}
+
+TEST(ProjectFileCorruption, DamagedRegionPlansAreNamed) {
+  const planning::Project project = test::makeSmallProject();
+  const std::string part = encodeDdf(*project.part);
+  std::string tool;
+  detail::putTool(tool, project.tools[0]);
+  auto decodeRegion = [&](const std::string& region) {
+    return decodeError(
+        forged({{"PROJ", infoPayload()}, {"PART", part}, {"TOOL", tool}, {"REGN", region}}));
+  };
+  planning::Region region = project.regions[0];
+  std::string good;
+  detail::putRegion(good, region);
+  // Plan offset: name (4 + 1), colour (12), faces (8 + 4); the stroke count sits after
+  // 4 + 4 + 24 + 1 + 8 + 4 + 8 + 8 + 4 + 4 = 69 plan bytes.
+  const std::size_t planAt = 5 + 12 + 12;
+  std::string flag = good;
+  flag[planAt + 32] = 2;
+  EXPECT_THAT(decodeRegion(flag), HasSubstr("chunk 4 ('REGN'): region 'r': smoothing flag 2"));
+  std::string strokes = good;
+  test::putLeAt(strokes, planAt + 69, std::uint64_t{1} << 61, 8);
+  EXPECT_THAT(decodeRegion(strokes), HasSubstr("the plan stroke count 2305843009213693952"));
+  std::string points = good;
+  test::putLeAt(points, planAt + 77, ~std::uint64_t{0}, 8);
+  EXPECT_THAT(decodeRegion(points), HasSubstr("the plan stroke point count"));
+  EXPECT_THAT(decodeRegion(good.substr(0, good.size() - 3)), HasSubstr("the plan stroke point"));
+  region.plan.feedSign = 0;
+  std::string sign;
+  detail::putRegion(sign, region);
+  const std::string message = decodeRegion(sign);
+  EXPECT_THAT(message, HasSubstr("p.ddfproj: the project in the file is invalid"));
+  EXPECT_THAT(message, HasSubstr("region 'r' plan: feed sign 0 must be +1 or -1"));
+  region.plan.feedSign = 1;
+  region.plan.linking = static_cast<planning::LinkingOrder>(9);
+  std::string linking;
+  detail::putRegion(linking, region);
+  EXPECT_THAT(decodeRegion(linking), HasSubstr("region 'r' plan: unknown linking order 9"));
 }
 
 /// Header offset of the chunk whose payload holds byte @p at of a well-formed file, or 0.

@@ -3,11 +3,15 @@
 #include <ddfcam/io/checksum.h>
 #include <ddfcam/io/ddf_file.h>
 #include <ddfcam/io/project_file.h>
+#include <ddfcam/log.h>
 #include <ddfcam/planning/demo_project.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cstring>
+#include <filesystem>
 #include <utility>
 #include <vector>
 
@@ -38,6 +42,22 @@ void expectSamePath(const planning::ToolPath& a, const planning::ToolPath& b) {
   }
 }
 
+void expectSamePlan(const planning::RegionPlan& a, const planning::RegionPlan& b) {
+  EXPECT_EQ(a.tool, b.tool);
+  EXPECT_EQ(a.flowSource, b.flowSource);
+  EXPECT_TRUE(sameBits(a.fixedDirection.data(), b.fixedDirection.data(), 24));
+  ASSERT_EQ(a.strokes.size(), b.strokes.size());
+  for (std::size_t s = 0; s < a.strokes.size(); ++s)
+    EXPECT_TRUE(sameVector(a.strokes[s], b.strokes[s])) << "stroke " << s;
+  EXPECT_EQ(a.smoothField, b.smoothField);
+  EXPECT_TRUE(sameBits(&a.smoothnessWeight, &b.smoothnessWeight, 8));
+  EXPECT_EQ(a.spacingMode, b.spacingMode);
+  EXPECT_TRUE(sameBits(&a.spacingMm, &b.spacingMm, 8));
+  EXPECT_TRUE(sameBits(&a.scallopToleranceMm, &b.scallopToleranceMm, 8));
+  EXPECT_EQ(a.feedSign, b.feedSign);
+  EXPECT_EQ(a.linking, b.linking);
+}
+
 /// Independent of planning::projectsEqual: every member compared here, bit for bit.
 void expectSameProject(const planning::Project& a, const planning::Project& b) {
   EXPECT_EQ(a.partName, b.partName);
@@ -61,6 +81,7 @@ void expectSameProject(const planning::Project& a, const planning::Project& b) {
     EXPECT_EQ(a.regions[i].name, b.regions[i].name);
     EXPECT_EQ(a.regions[i].faces, b.regions[i].faces);
     EXPECT_TRUE(sameBits(a.regions[i].color.data(), b.regions[i].color.data(), 12));
+    expectSamePlan(a.regions[i].plan, b.regions[i].plan);
   }
   ASSERT_EQ(a.tools.size(), b.tools.size());
   for (std::size_t i = 0; i < a.tools.size(); ++i) EXPECT_EQ(a.tools[i], b.tools[i]) << i;
@@ -132,7 +153,7 @@ TEST(ProjectFile, SmallestFileMatchesTheDocumentedLayout) {
   planning::Project project;
   project.partName = "ab";
   std::string expected("DDFPRJ\x1a\n", 8);
-  expected += std::string("\x01\0\0\0", 4) + std::string("\x01\0\0\0", 4);
+  expected += std::string("\x02\0\0\0", 4) + std::string("\x01\0\0\0", 4);
   expected += std::string("\x32\0\0\0\0\0\0\0", 8);  // 50 bytes in all
   expected += "PROJ" + std::string("\x0a\0\0\0\0\0\0\0", 8);
   expected += std::string("\x02\0\0\0", 4) + "ab" + std::string(4, '\0');
@@ -146,12 +167,13 @@ TEST(ProjectFile, ChunksFollowTheDocumentedTable) {
   const auto chunks = chunksOf(encodeProject(project));
   std::vector<std::string> tags;
   for (const auto& chunk : chunks) tags.push_back(chunk.first);
-  EXPECT_EQ(tags, (std::vector<std::string>{"PROJ", "PART", "DSGN", "TOOL", "TOOL", "PATH", "PATH",
-                                            "FELD", "FELD", "REGN", "STAT", "STAT", "SURF"}));
+  EXPECT_EQ(tags,
+            (std::vector<std::string>{"PROJ", "PART", "DSGN", "TOOL", "TOOL", "PATH", "PATH",
+                                      "FELD", "FELD", "REGN", "REGN", "STAT", "STAT", "SURF"}));
   EXPECT_EQ(chunks[1].second, encodeDdf(*project.part));
   const std::string& name = project.surfaces[0].name;
-  EXPECT_EQ(chunks[12].second.substr(4 + name.size()), encodeDdf(project.surfaces[0].ddf));
-  EXPECT_EQ(chunks[12].second.substr(4, name.size()), name);
+  EXPECT_EQ(chunks[13].second.substr(4 + name.size()), encodeDdf(project.surfaces[0].ddf));
+  EXPECT_EQ(chunks[13].second.substr(4, name.size()), name);
   const planning::ToolPath& path = project.paths[0];
   EXPECT_EQ(chunks[5].second.size(),
             4 + path.name.size() + 4 + 8 + 8 + 19 * 8 * path.poses.size() + 8 + 4 * 3);
@@ -159,6 +181,136 @@ TEST(ProjectFile, ChunksFollowTheDocumentedTable) {
   const std::size_t matrixAt = 4 + path.name.size() + 4 + 8 + 8;
   EXPECT_TRUE(
       sameBits(chunks[5].second.data() + matrixAt, path.poses[0].pose.matrix().data(), 128));
+}
+
+TEST(ProjectFile, RegionPayloadsFollowTheDocumentedLayout) {
+  const planning::Project project = test::makeRichProject();
+  const auto chunks = chunksOf(encodeProject(project));
+  for (int r = 0; r < 2; ++r) {
+    const planning::Region& region = project.regions[r];
+    const std::string& payload = chunks[9 + r].second;
+    std::size_t strokeBytes = 8;
+    for (const auto& stroke : region.plan.strokes) strokeBytes += 8 + 24 * stroke.size();
+    const std::size_t planAt = 4 + region.name.size() + 12 + 8 + 4 * region.faces.size();
+    EXPECT_EQ(payload.size(), planAt + 4 + 4 + 24 + 1 + 8 + 4 + 8 + 8 + 4 + 4 + strokeBytes);
+    // tool, flow source, then the fixed direction's three doubles, bit for bit.
+    EXPECT_TRUE(sameBits(payload.data() + planAt, &region.plan.tool, 4));
+    EXPECT_TRUE(sameBits(payload.data() + planAt + 8, region.plan.fixedDirection.data(), 24));
+  }
+  // The first region's last stroke holds one point, the last 24 bytes of the payload.
+  const std::string& first = chunks[9].second;
+  EXPECT_TRUE(sameBits(first.data() + first.size() - 24,
+                       project.regions[0].plan.strokes.back()[0].data(), 24));
+}
+
+/// The .ddfproj of @p project as format version 1 wrote it: "REGN" payloads end after the
+/// faces, the header says version 1. Built here from the documented layout.
+std::string asVersion1(const planning::Project& project) {
+  planning::Project withoutPlans = project;
+  for (planning::Region& region : withoutPlans.regions) region.plan = {};
+  const std::string v2 = encodeProject(withoutPlans);
+  std::string out = v2.substr(0, 24);
+  test::putLeAt(out, 8, 1, 4);
+  for (auto [tag, payload] : chunksOf(v2)) {
+    if (tag == "REGN") {
+      std::uint32_t nameBytes = 0;
+      std::memcpy(&nameBytes, payload.data(), 4);  // little-endian host assumed by the test
+      std::uint64_t faces = 0;
+      std::memcpy(&faces, payload.data() + 4 + nameBytes + 12, 8);
+      payload.resize(4 + nameBytes + 12 + 8 + 4 * faces);
+    }
+    out += tag;
+    std::string length(8, '\0');
+    test::putLeAt(length, 0, payload.size(), 8);
+    out += length + payload;
+  }
+  out += std::string(4, '\0');
+  return test::resized(std::move(out));
+}
+
+TEST(ProjectFile, Version1FilesLoadWithDefaultPlans) {
+  planning::Project project = test::makeRichProject();
+  ProjectReadReport report;
+  const planning::Project back = decodeProject(asVersion1(project), "old.ddfproj", &report);
+  EXPECT_EQ(report.formatVersion, 1u);
+  EXPECT_TRUE(report.skippedChunks.empty());
+  for (planning::Region& region : project.regions) region.plan = planning::RegionPlan{};
+  expectSameProject(project, back);
+  EXPECT_TRUE(planning::projectsEqual(project, back));
+  // Saving again writes version 2.
+  EXPECT_EQ(encodeProject(back).substr(8, 4), std::string("\x02\0\0\0", 4));
+}
+
+TEST(ProjectFile, CommittedVersion1FileStillLoads) {
+  // Values from tests/data/README.md, where the file's content is described.
+  const auto path = std::filesystem::path(DDFCAM_TEST_DATA_DIR) / "two_regions_v1.ddfproj";
+  ProjectReadReport report;
+  const planning::Project project = readProject(path, &report);
+  EXPECT_EQ(report.formatVersion, 1u);
+  EXPECT_EQ(project.partName, "v1 sample");
+  ASSERT_TRUE(project.part.has_value());
+  EXPECT_EQ(project.part->faceCount(), 4);
+  ASSERT_EQ(project.regions.size(), 2u);
+  EXPECT_EQ(project.regions[0].name, "left");
+  EXPECT_EQ(project.regions[0].faces, (std::vector<int>{0, 1}));
+  EXPECT_EQ(project.regions[1].name, "right");
+  EXPECT_EQ(project.regions[1].faces, (std::vector<int>{2, 3}));
+  EXPECT_EQ(project.regions[1].color, (std::array<float, 3>{0.0f, 0.25f, 1.0f}));
+  for (const planning::Region& region : project.regions)
+    expectSamePlan(region.plan, planning::RegionPlan{});
+  ASSERT_EQ(project.tools.size(), 1u);
+  EXPECT_EQ(project.tools[0].radiusMm, 5.0);
+  ASSERT_EQ(project.paths.size(), 1u);
+  EXPECT_EQ(project.paths[0].feedMmPerMin, 1500.0);
+  EXPECT_EQ(project.paths[0].poses[0].contact, Eigen::Vector3d(0.5, 0.25, 0.0));
+  EXPECT_EQ(project.fields[0].values, std::vector<float>(24, 0.5f));
+  EXPECT_EQ(project.states[0].heights, std::vector<float>(24, 0.25f));
+  EXPECT_TRUE(planning::projectsEqual(project, decodeProject(encodeProject(project), "again")));
+}
+
+/// @p bytes with a chunk (@p tag, @p payload) inserted before the @p n-th chunk, resealed.
+std::string withChunk(const std::string& bytes, std::size_t n, const std::string& tag,
+                      const std::string& payload) {
+  std::size_t at = 24;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint64_t length = 0;
+    std::memcpy(&length, bytes.data() + at + 4, 8);
+    at += 12 + length;
+  }
+  std::string chunk = tag + std::string(8, '\0') + payload;
+  test::putLeAt(chunk, 4, payload.size(), 8);
+  std::string out = bytes;
+  out.insert(at, chunk);
+  const std::uint32_t count = static_cast<unsigned char>(out[12]) + 1u;  // small files only
+  test::putLeAt(out, 12, count, 4);
+  return test::resized(std::move(out));
+}
+
+TEST(ProjectFile, UnknownOptionalChunksAreSkippedAndReported) {
+  const planning::Project project = test::makeRichProject();
+  const std::string bytes = encodeProject(project);
+  std::string withNotes = withChunk(bytes, 3, "note", "written by a later ddfcam");
+  withNotes = withChunk(withNotes, chunksOf(withNotes).size(), "thmb", std::string(40, '\xff'));
+  std::vector<std::string> logged;
+  const LogSink previous = setLogSink([&](LogLevel level, const std::string& message) {
+    if (level == LogLevel::Warning) logged.push_back(message);
+  });
+  ProjectReadReport report;
+  const planning::Project back = decodeProject(withNotes, "later.ddfproj", &report);
+  setLogSink(previous);
+  expectSameProject(project, back);
+  EXPECT_EQ(report.formatVersion, 2u);
+  EXPECT_EQ(report.skippedChunks, (std::vector<std::string>{"later.ddfproj: chunk 4 ('note')",
+                                                            "later.ddfproj: chunk 16 ('thmb')"}));
+  ASSERT_EQ(logged.size(), 2u);
+  EXPECT_THAT(logged[0], HasSubstr("chunk 4 ('note'): optional chunk of a newer ddfcam skipped"));
+  // The same chunk with an upper-case tag must be understood, so it is an error.
+  EXPECT_THAT(test::ioErrorMessage(
+                  [&] { decodeProject(withChunk(bytes, 3, "Note", "x"), "later.ddfproj"); }),
+              HasSubstr("chunk 4 ('Note'): unknown chunk type in format version 2"));
+  // Optional or not, nothing may precede the project header.
+  EXPECT_THAT(test::ioErrorMessage([&] { decodeProject(withChunk(bytes, 0, "note", ""), "x"); }),
+              HasSubstr("the first chunk must be 'PROJ'"));
 }
 
 TEST(ProjectFile, InvalidProjectIsNotEncodedOrWritten) {

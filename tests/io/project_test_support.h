@@ -36,7 +36,8 @@ inline planning::PathPose makePose(double angleRad, const Eigen::Vector3d& axis,
 }
 
 /// A 2-face part (planePatch 1 x 1 cells, m = 3) and one item of every kind: design mesh,
-/// tool, path (2 poses), field, region, state, surface (a 2-face m = 2 plane patch).
+/// tool, path (2 poses), field, region (with a plan holding one 2-point stroke), state,
+/// surface (a 2-face m = 2 plane patch).
 inline planning::Project makeSmallProject() {
   planning::Project project;
   project.partName = "small";
@@ -54,7 +55,12 @@ inline planning::Project makeSmallProject() {
   path.poses = {makePose(0.3, {0, 1, 0}, {0.5, 0.5, 1.0}), makePose(0.1, {1, 0, 0}, {1, 0.5, 1})};
   path.passStarts = {0};
   project.paths.push_back(path);
-  project.regions.push_back({"r", {1}, {1.0f, 0.0f, 0.5f}});
+  project.regions.push_back({"r", {1}, {1.0f, 0.0f, 0.5f}, {}});
+  planning::RegionPlan& plan = project.regions[0].plan;
+  plan.tool = 0;
+  plan.flowSource = planning::FlowFieldSource::UserStrokes;
+  plan.strokes = {{{0.25, 0.5, 0.0}, {1.5, 0.75, 0.0}}};
+  plan.spacingMm = 0.5;
   project.states.push_back({"stock", std::vector<float>(values, 0.25f)});
   params.m = 2;
   project.surfaces.push_back({"s", ddf::planePatch(params).ddf});
@@ -62,7 +68,8 @@ inline planning::Project makeSmallProject() {
   return project;
 }
 
-/// Every kind of item, with unicode names, NaN values, signed zeros and odd doubles.
+/// Every kind of item, with unicode names, NaN values, signed zeros and odd doubles; one region
+/// with a plan that differs from the default in every member, one with the default plan.
 inline planning::Project makeRichProject() {
   planning::Project project;
   project.partName = "Teil \u00fc \u8a66\u9a13 \u2300 5";
@@ -88,7 +95,21 @@ inline planning::Project makeRichProject() {
     removed.values.push_back(i % 5 == 1 ? payloadNaN() : 1e-30f * static_cast<float>(i));
   }
   project.fields = {signedField, removed};
-  project.regions.push_back({"Flanke S\u00fcd", {1, 3, 4}, {0.1f, 0.2f, 1.0f / 3.0f}});
+  project.regions.push_back({"Flanke S\u00fcd", {1, 3, 4}, {0.1f, 0.2f, 1.0f / 3.0f}, {}});
+  planning::RegionPlan& plan = project.regions[0].plan;
+  plan.tool = 1;
+  plan.flowSource = planning::FlowFieldSource::FixedDirection;
+  plan.fixedDirection = {-0.0, 1.0 / 3.0, 1e-300};
+  plan.strokes = {{{0.1, 0.2, -0.0}, {1.0 / 7.0, 2.0, 3.0}, {4.0, 5.0, 6.0}}, {}, {{1e300, -2, 0}}};
+  plan.smoothField = false;
+  plan.smoothnessWeight = 0.0;
+  plan.spacingMode = planning::SpacingMode::ScallopTolerance;
+  plan.spacingMm = std::numeric_limits<double>::denorm_min();
+  plan.scallopToleranceMm = 0.004;
+  plan.feedSign = -1;
+  plan.linking = planning::LinkingOrder::OneDirection;
+  planning::Region defaults{"Boden", {0, 2}, {0.5f, 0.5f, 0.5f}, {}};
+  project.regions.push_back(defaults);
 
   project.tools.push_back({"Walze R5 W10", planning::ToolKind::CylinderRoll, 5.0, 10.0, 50});
   project.tools.push_back({"Kugel \u23006", planning::ToolKind::Sphere, 3.0, 1.25, 32});

@@ -77,7 +77,8 @@ struct CurvatureErrors {
 inline CurvatureErrors curvatureErrors(const ddf::GeneratedSurface& part,
                                        const planning::CurvatureField& c, double sign) {
   const ddf::DisplacementField& ddf = part.ddf;
-  const int n = ddf.raster().steps(), d = c.step;
+  const int n = ddf.raster().steps();
+  const int reach = 2 * c.step;  // the fourth-order stencils sample up to 2 d steps away
   const auto& mesh = ddf.support();
   std::vector<CurvatureTruth> truth(c.size());
   double kScale = 0.0;
@@ -102,9 +103,9 @@ inline CurvatureErrors curvatureErrors(const ddf::GeneratedSurface& part,
         const double cosA = std::min(1.0, std::abs(c.dirMax[at].dot(t.dirMax)));
         const double angle = std::acos(cosA) * 180.0 / std::numbers::pi;
         const bool aniso = t.kMax - t.kMin > 0.1 * kScale;
-        ErrorStats& s = boundaryFace                   ? out.boundary
-                        : (i >= d && j >= d && k >= d) ? out.interior
-                                                       : out.seam;
+        ErrorStats& s = boundaryFace                               ? out.boundary
+                        : (i >= reach && j >= reach && k >= reach) ? out.interior
+                                                                   : out.seam;
         s.add(c.kMax[at] - t.kMax, c.kMin[at] - t.kMin, angle, aniso);
       }
   }

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <iostream>
@@ -109,11 +110,14 @@ const std::vector<Case>& cases() {
   return all;
 }
 
-// Halving the raster spacing cuts the interior error ~4x (second order), the seams follow.
-TEST(Curvature, ConvergesSecondOrderOnAllAnalyticParts) {
+// Halving the raster spacing cuts the error >= 3.5x (second order or better; the fourth-order
+// stencils give ~16x) in the interior and at seams alike, until the float rounding of the
+// stored heights (~1e-6 1/mm here) takes over. m = 9 is the coarsest raster with interior points
+// (the stencils reach 2 steps).
+TEST(Curvature, ConvergesSecondOrderOrBetterOnAllAnalyticParts) {
   for (const Case& c : cases()) {
-    const CurvatureErrors coarse = errorsOf(c.make(5), c.sign);
-    const CurvatureErrors fine = errorsOf(c.make(9), c.sign);
+    const CurvatureErrors coarse = errorsOf(c.make(9), c.sign);
+    const CurvatureErrors fine = errorsOf(c.make(17), c.sign);
     SCOPED_TRACE(c.name);
     if (fine.interior.kRms > 1e-6) {
       EXPECT_GE(coarse.interior.kRms / fine.interior.kRms, 3.5);
@@ -121,7 +125,6 @@ TEST(Curvature, ConvergesSecondOrderOnAllAnalyticParts) {
     if (fine.seam.kRms > 1e-6) {
       EXPECT_GE(coarse.seam.kRms / fine.seam.kRms, 3.5);
     }
-    EXPECT_LE(fine.seam.kRms, 2.0 * fine.interior.kRms + 1e-6);
   }
 }
 
@@ -256,6 +259,20 @@ TEST(Curvature, AutomaticStepGrowsWithResolution) {
   EXPECT_LE(3 * automaticCurvatureStep(400), 399);
 }
 
+// Fig. 8.8: at high m the float rounding of the heights, amplified by 1 / step^2, corrupts
+// d = 1 differences; the automatic step of eq. 8.2 keeps the error near the truncation level,
+// also across the seams of a coarse support (60 degree bends, ghosts 6 raster steps out).
+TEST(Curvature, AutomaticStepBeatsUnitStepAtHighResolution) {
+  const GeneratedSurface part = ddf::torusPart(
+      {.majorRadiusMm = 3.0, .minorRadiusMm = 1.0, .segmentsU = 12, .segmentsV = 6, .m = 64});
+  const CurvatureErrors automatic = curvatureErrors(part, computeCurvature(part.ddf), 1.0);
+  const CurvatureErrors unit = errorsOf(part, 1.0, 1);
+  EXPECT_EQ(automaticCurvatureStep(64), 3);
+  EXPECT_LT(automatic.interior.kMax, 0.5 * unit.interior.kMax);
+  EXPECT_LE(automatic.seam.kMax, 2.0 * automatic.interior.kMax);
+  EXPECT_LT(automatic.interior.angleMaxDeg, 0.01);
+}
+
 TEST(Curvature, RejectsBadStepAndCancels) {
   const GeneratedSurface part = sinSin(9);
   EXPECT_THROW(computeCurvature(part.ddf, withStep(-1)), InvalidInput);
@@ -284,19 +301,75 @@ TEST(EllipsoidSurface, SupportAndRasterLieOnTheEllipsoid) {
   EXPECT_THROW(ddf::EllipsoidSurface(1.0, 0.0, 1.0), InvalidInput);
 }
 
-// The accuracy table of the issue (printed; the assertions above check its claims).
-TEST(Curvature, PrintsAccuracyTable) {
-  std::printf("%-20s %3s %8s | %9s %9s %7s %7s | %9s %9s %7s %7s\n", "part", "m", "h mm",
-              "int k rms", "k max", "ang rms", "ang max", "seam rms", "k max", "ang rms",
-              "ang max");
+// Seam points (stencils reaching into a neighbouring face through ghost heights) are no worse
+// than twice the interior, in the max norm, on every part and resolution of the table.
+TEST(Curvature, SeamMaxErrorIsWithinTwiceTheInterior) {
   for (const Case& c : cases())
-    for (int m : {5, 9, 17}) {
+    for (int m : {9, 17}) {
       const CurvatureErrors e = errorsOf(c.make(m), c.sign);
-      std::printf("%-20s %3d %8.4f | %9.2e %9.2e %7.3f %7.3f | %9.2e %9.2e %7.3f %7.3f\n", c.name,
-                  m, e.spacingMm, e.interior.kRms, e.interior.kMax, e.interior.angleRmsDeg,
-                  e.interior.angleMaxDeg, e.seam.kRms, e.seam.kMax, e.seam.angleRmsDeg,
-                  e.seam.angleMaxDeg);
+      SCOPED_TRACE(std::string(c.name) + " m = " + std::to_string(m));
+      EXPECT_LE(e.seam.kMax, 2.0 * e.interior.kMax + 1e-6);
+      EXPECT_LE(e.seam.kRms, 2.0 * e.interior.kRms + 1e-6);
     }
+}
+
+// libigl's quadric fit (2-ring) on z = sin x sin y sampled on a valence-4/8 grid of spacing
+// 0.062 mm: k rms 6.3e-4, k max 2.7e-3, direction max 0.15 deg (oracles note). At m = 9 the
+// raster spacing in x and y is 2 pi / 12 / 8 = 0.0654 mm, coarser than the baseline's, so
+// staying below its errors there is a fair win at equal sampling density.
+TEST(Curvature, BeatsTheQuadricFitBaselineOnSinSin) {
+  const GeneratedSurface part = sinSin(9);
+  const double spacingXY = 2.0 * kPi / 12.0 / 8.0;
+  ASSERT_GE(spacingXY, 0.062);
+  const CurvatureErrors e = errorsOf(part, 1.0);
+  for (const test::ErrorStats* s : {&e.interior, &e.seam}) {
+    EXPECT_LT(s->kRms, 6.3e-4);
+    EXPECT_LT(s->kMax, 2.7e-3);
+    EXPECT_LT(s->angleMaxDeg, 0.15);
+  }
+}
+
+// libigl on the torus R3/r1 (regular grid, spacing 0.112 mm): k_tube rms 0.0084, direction rms
+// 0.09 deg. Our torus at m = 9 samples the tube every 2 pi / 12 / 8 = 0.065 mm and the parallel
+// every 2 pi (R +- r) / 24 / 8 = 0.065..0.13 mm; compared against the baseline's finer 0.112 mm
+// the margin below is still large.
+TEST(Curvature, BeatsTheQuadricFitBaselineOnTheTorus) {
+  const CurvatureErrors e = errorsOf(torus(9), 1.0);
+  for (const test::ErrorStats* s : {&e.interior, &e.seam}) {
+    EXPECT_LT(s->kRms, 0.0084 / 10.0);
+    EXPECT_LT(s->angleRmsDeg, 0.09 / 10.0);
+  }
+}
+
+// log2 of the error ratio between spacings 2h and h, or NaN without data on either.
+double observedOrder(double coarse, double fine) {
+  return coarse > 0.0 && fine > 0.0 ? std::log2(coarse / fine) : std::nan("");
+}
+
+// The accuracy table of the issue (printed; the assertions above check its claims): errors
+// against the analytic truth at halving spacings, with the observed order of the rms errors,
+// the seam / interior ratio of the max errors, and the faces on an open support boundary
+// (extrapolated ghosts, no goal). At m = 5 every point is a seam point (the stencils reach 2
+// steps); at m = 33 the float rounding of the stored heights (~1e-6..1e-5 1/mm) dominates.
+TEST(Curvature, PrintsAccuracyTable) {
+  std::printf("%-19s %2s %6s | %8s %8s %5s %5s %4s | %8s %8s %5s %5s %4s | %4s | %8s %8s\n", "part",
+              "m", "h mm", "int rms", "k max", "a rms", "a max", "ord", "seam rms", "k max",
+              "a rms", "a max", "ord", "s/i", "bnd rms", "k max");
+  for (const Case& c : cases()) {
+    CurvatureErrors previous;
+    for (int m : {5, 9, 17, 33}) {
+      const CurvatureErrors e = errorsOf(c.make(m), c.sign);
+      const test::ErrorStats &in = e.interior, &seam = e.seam;
+      std::printf(
+          "%-19s %2d %6.4f | %8.2e %8.2e %5.3f %5.3f %4.1f | %8.2e %8.2e %5.3f %5.3f %4.1f | "
+          "%4.2f | %8.2e %8.2e\n",
+          c.name, m, e.spacingMm, in.kRms, in.kMax, in.angleRmsDeg, in.angleMaxDeg,
+          observedOrder(previous.interior.kRms, in.kRms), seam.kRms, seam.kMax, seam.angleRmsDeg,
+          seam.angleMaxDeg, observedOrder(previous.seam.kRms, seam.kRms),
+          in.points ? seam.kMax / in.kMax : std::nan(""), e.boundary.kRms, e.boundary.kMax);
+      previous = e;
+    }
+  }
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -30,7 +31,17 @@ Project smallProject() {
   p.designMesh =
       ddf::TriangleMesh{{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}}, {{0, 1, 2}}};
   p.fields = {ScalarField{"height", "mm", true, std::vector<float>(n, 0.5f)}};
-  p.regions = {Region{"left", {0, 2, 5}}};
+  p.regions = {Region{"left", {0, 2, 5}, {0.9f, 0.6f, 0.2f}, {}}};
+  RegionPlan& plan = p.regions[0].plan;
+  plan.tool = 1;
+  plan.flowSource = FlowFieldSource::UserStrokes;
+  plan.fixedDirection = ddf::Vec3(0.0, 1.0, 0.25);
+  plan.strokes = {{ddf::Vec3(0, 0, 0), ddf::Vec3(1, 0.5, 0)}, {ddf::Vec3(2, 2, 0)}};
+  plan.smoothnessWeight = 0.5;
+  plan.spacingMode = SpacingMode::ScallopTolerance;
+  plan.spacingMm = 0.75;
+  plan.feedSign = -1;
+  plan.linking = LinkingOrder::OneDirection;
   p.tools = {Tool{}, Tool{.name = "ball", .kind = ToolKind::Sphere}};
   PathPose pose;
   pose.pose.translation() = ddf::Vec3(1, 2, 3);
@@ -74,6 +85,33 @@ TEST(Project, EachBrokenInvariantIsRejectedNamingTheItem) {
        [](Project& p) {
          p.regions[0].faces = {4, 2};
        }},
+      {"region 'left' plan: tool index 2", [](Project& p) { p.regions[0].plan.tool = 2; }},
+      {"region 'left' plan: tool index -2", [](Project& p) { p.regions[0].plan.tool = -2; }},
+      {"region 'left' plan: spacing 0 mm", [](Project& p) { p.regions[0].plan.spacingMm = 0.0; }},
+      {"region 'left' plan: spacing nan",
+       [](Project& p) { p.regions[0].plan.spacingMm = std::nan(""); }},
+      {"region 'left' plan: spacing inf",
+       [](Project& p) { p.regions[0].plan.spacingMm = std::numeric_limits<double>::infinity(); }},
+      {"region 'left' plan: scallop tolerance -1",
+       [](Project& p) { p.regions[0].plan.scallopToleranceMm = -1.0; }},
+      {"region 'left' plan: feed sign 0", [](Project& p) { p.regions[0].plan.feedSign = 0; }},
+      {"region 'left' plan: feed sign 2", [](Project& p) { p.regions[0].plan.feedSign = 2; }},
+      {"region 'left' plan: the fixed flow direction",
+       [](Project& p) { p.regions[0].plan.fixedDirection = ddf::Vec3::Zero(); }},
+      {"region 'left' plan: the fixed flow direction",
+       [](Project& p) { p.regions[0].plan.fixedDirection.y() = std::nan(""); }},
+      {"region 'left' plan: stroke 1 point 0",
+       [](Project& p) { p.regions[0].plan.strokes[1][0].z() = std::nan(""); }},
+      {"region 'left' plan: smoothness weight -0.5",
+       [](Project& p) { p.regions[0].plan.smoothnessWeight = -0.5; }},
+      {"region 'left' plan: unknown flow field source 7",
+       [](Project& p) { p.regions[0].plan.flowSource = static_cast<FlowFieldSource>(7); }},
+      {"region 'left' plan: unknown spacing mode -1",
+       [](Project& p) { p.regions[0].plan.spacingMode = static_cast<SpacingMode>(-1); }},
+      {"region 'left' plan: unknown linking order 2",
+       [](Project& p) { p.regions[0].plan.linking = static_cast<LinkingOrder>(2); }},
+      {"region 'left' plan: tool index 1 out of range (1 tools",
+       [](Project& p) { p.tools.pop_back(), p.paths.clear(); }},
       {"path 'zig'", [](Project& p) { p.paths[0].tool = 2; }},
       {"path 'zig'", [](Project& p) { p.paths[0].tool = -1; }},
       {"path 'zig'",
@@ -95,6 +133,10 @@ TEST(Project, EachBrokenInvariantIsRejectedNamingTheItem) {
       {"state 'stock'", [](Project& p) { p.part.reset(), p.fields.clear(); }},
       {"region 'left'", [](Project& p) { p.part.reset(), p.fields.clear(), p.states.clear(); }},
   };
+  Project noTool = smallProject();
+  noTool.regions[0].plan.tool = -1;
+  noTool.regions[0].plan.smoothnessWeight = 0.0;
+  EXPECT_NO_THROW(validateProject(noTool));
   for (const auto& [mention, breakIt] : cases) {
     Project p = smallProject();
     breakIt(p);
@@ -128,6 +170,22 @@ TEST(Project, EqualityDetectsEveryOneBitChange) {
       {"tool radius", [](Project& p) { flipLowestBit(p.tools[0].radiusMm); }},
       {"region colour", [](Project& p) { flipLowestBit(p.regions[0].color[1]); }},
       {"feed", [](Project& p) { flipLowestBit(p.paths[0].feedMmPerMin); }},
+      {"plan tool", [](Project& p) { p.regions[0].plan.tool = 0; }},
+      {"plan source",
+       [](Project& p) { p.regions[0].plan.flowSource = FlowFieldSource::FixedDirection; }},
+      {"plan direction", [](Project& p) { flipLowestBit(p.regions[0].plan.fixedDirection.z()); }},
+      {"plan stroke point", [](Project& p) { flipLowestBit(p.regions[0].plan.strokes[0][1].y()); }},
+      {"plan stroke count", [](Project& p) { p.regions[0].plan.strokes.pop_back(); }},
+      {"plan stroke length",
+       [](Project& p) { p.regions[0].plan.strokes[1].push_back(ddf::Vec3(2, 2, 0)); }},
+      {"plan smoothing", [](Project& p) { p.regions[0].plan.smoothField = false; }},
+      {"plan weight", [](Project& p) { flipLowestBit(p.regions[0].plan.smoothnessWeight); }},
+      {"plan mode", [](Project& p) { p.regions[0].plan.spacingMode = SpacingMode::FixedSpacing; }},
+      {"plan spacing", [](Project& p) { flipLowestBit(p.regions[0].plan.spacingMm); }},
+      {"plan tolerance", [](Project& p) { flipLowestBit(p.regions[0].plan.scallopToleranceMm); }},
+      {"plan feed sign", [](Project& p) { p.regions[0].plan.feedSign = 1; }},
+      {"plan linking", [](Project& p) { p.regions[0].plan.linking = LinkingOrder::ZigZag; }},
+      {"plan signed zero", [](Project& p) { p.regions[0].plan.strokes[0][0].x() = -0.0; }},
       {"signed zero", [](Project& p) { p.fields[0].values[5] = -0.0f; }},
       {"no design mesh", [](Project& p) { p.designMesh.reset(); }},
       {"part name", [](Project& p) { p.partName += " "; }},

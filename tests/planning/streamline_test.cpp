@@ -301,6 +301,38 @@ TEST(Streamline, StopsNearAnExistingPathAndAtMaxLength) {
   EXPECT_NEAR(capped.lengthMm, 5.0, 1e-6);
 }
 
+TEST(Streamline, StopsAtARegionBoundaryAndStaysInsideIt) {
+  const ddf::DisplacementField& ddf = cylinder().ddf;
+  // The region: faces whose centroid lies at 5 < z < 20 mm (whole rings of 2.5 mm).
+  std::vector<std::uint8_t> mask(static_cast<std::size_t>(ddf.faceCount()), 0);
+  for (int f = 0; f < ddf.faceCount(); ++f) {
+    const double z = ddf.pointAt(f, Vec3::Constant(1.0 / 3.0), 0.0).z();
+    mask[static_cast<std::size_t>(f)] = (z > 5.0 && z < 20.0) ? 1 : 0;
+  }
+  StreamlineParams params;
+  params.faceMask = mask;
+  int seedFace = 0;
+  while (!mask[static_cast<std::size_t>(seedFace)]) ++seedFace;
+  const Streamline line =
+      traceStreamline(ddf, constantField(ddf, Vec3::UnitZ()), {seedFace, Vec3(0.2, 0.3, 0.5)}, params);
+  EXPECT_EQ(line.stop, Streamline::RegionBoundary);
+  EXPECT_EQ(line.backwardStop, Streamline::RegionBoundary);
+  for (const auto& p : line.points) EXPECT_TRUE(mask[static_cast<std::size_t>(p.face)]);
+  EXPECT_NEAR(line.points.front().point.z(), 5.0, 1e-9);
+  EXPECT_NEAR(line.points.back().point.z(), 20.0, 1e-9);
+  // A seed outside the region gives a one-point line.
+  int outside = 0;
+  while (mask[static_cast<std::size_t>(outside)]) ++outside;
+  const Streamline none =
+      traceStreamline(ddf, constantField(ddf, Vec3::UnitZ()), {outside, Vec3(0.2, 0.3, 0.5)}, params);
+  EXPECT_EQ(none.points.size(), 1u);
+  EXPECT_EQ(none.stop, Streamline::RegionBoundary);
+  params.faceMask.pop_back();
+  EXPECT_THROW(traceStreamline(ddf, constantField(ddf, Vec3::UnitZ()), {seedFace, Vec3(0.2, 0.3, 0.5)},
+                               params),
+               InvalidInput);
+}
+
 TEST(Streamline, StopsAtUndefinedField) {
   const ddf::DisplacementField& ddf = cylinder().ddf;
   LineField axial = constantField(ddf, Vec3::UnitZ());

@@ -138,6 +138,10 @@ class PartScene {
   /// @brief Number of cells of overlay @p name.
   /// @throws InvalidInput if there is no overlay of that name.
   long long overlayCellCount(const std::string& name) const;
+  /// @brief The polydata overlay @p name shows (owned by the scene; valid until the overlay
+  /// is replaced or removed), e.g. for tests that check what is drawn.
+  /// @throws InvalidInput if there is no overlay of that name.
+  vtkPolyData* overlayData(const std::string& name) const;
 
   // --- picking ------------------------------------------------------------------------------
 

@@ -8,11 +8,21 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace ddfcam::io {
 
-/// @brief Project format version this build writes and the newest it reads.
-inline constexpr std::uint32_t kProjectFormatVersion = 1;
+/// @brief Project format version this build writes and the newest it reads (it reads 1 too).
+inline constexpr std::uint32_t kProjectFormatVersion = 2;
+
+/// @brief What decodeProject found besides the project itself.
+struct ProjectReadReport {
+  /// Format version of the file read (1 or 2; default 0 before a read).
+  std::uint32_t formatVersion = 0;
+  /// Optional chunks this build does not know and skipped, as "<source>: chunk 5 ('note')",
+  /// in file order (default empty). Their content is not loaded and is not saved again.
+  std::vector<std::string> skippedChunks;
+};
 
 /// @brief Serialises @p project in the .ddfproj format (format version kProjectFormatVersion).
 ///
@@ -29,10 +39,18 @@ inline constexpr std::uint32_t kProjectFormatVersion = 1;
 /// | 24 | | C chunks: 4-byte ASCII tag, u64 payload size L, L payload bytes |
 /// | end-4 | 4 | u32 CRC-32 (IEEE, zlib) of every byte before it |
 ///
-/// Chunks of version 1 (a reader rejects any other tag; a later version adds tags and raises
-/// the version). "PROJ" comes first; the others may follow in any order (encodeProject writes
-/// them in the order of this table), and the order of the chunks with one tag is the order of
-/// the project's vector:
+/// Optional chunks: a tag whose first character is a lower-case ASCII letter ('a' to 'z') marks
+/// a chunk that a reader may ignore without misreading anything else. A reader skips such a
+/// chunk when it does not know the tag, and reports the skip (ProjectReadReport::skippedChunks
+/// and a warning through ddfcam::log); the envelope (size, checksum) still covers it. A later
+/// version adds self-contained data (notes, thumbnails, caches, new item kinds) as optional
+/// chunks without raising the format version. Data an older reader must not ignore (a changed
+/// payload of an existing tag, or a chunk that changes the meaning of others) takes an
+/// upper-case tag and a version bump. Any other unknown tag is an error.
+///
+/// Chunks of version 2 (all upper-case, so none is optional). "PROJ" comes first; the others may
+/// follow in any order (encodeProject writes them in the order of this table), and the order of
+/// the chunks with one tag is the order of the project's vector:
 /// | tag | count | payload |
 /// |---|---|---|
 /// | "PROJ" | 1 | string partName, string sourcePath |
@@ -41,12 +59,20 @@ inline constexpr std::uint32_t kProjectFormatVersion = 1;
 /// | "TOOL" | per tool | string name, i32 kind, f64 radiusMm, f64 widthMm, i32 segments |
 /// | "PATH" | per path | string name, i32 tool, f64 feed, u64 P, P poses, u64 S, S i32 |
 /// | "FELD" | per field | string name, string unit, u8 isSigned 0/1, u64 N, N f32 values |
-/// | "REGN" | per region | string name, 3 f32 colour RGB, u64 N, N i32 support faces |
+/// | "REGN" | per region | string name, 3 f32 colour RGB, u64 N, N i32 support faces, plan |
 /// | "STAT" | per state | string name, u64 N, N f32 heights |
 /// | "SURF" | per surface | string name, then to the payload's end the .ddf encoding |
 ///
 /// The S i32 of a path are its passStarts, the feed is feedMmPerMin (mm/min), kind is the
 /// ToolKind value.
+///
+/// The plan of a region (planning::RegionPlan, from version 2 on) is: i32 tool, i32 flowSource,
+/// 3 f64 fixedDirection, u8 smoothField 0/1, f64 smoothnessWeight, i32 spacingMode, f64
+/// spacingMm, f64 scallopToleranceMm, i32 feedSign, i32 linking, u64 S strokes, then per stroke
+/// u64 P and P x 3 f64 points (mm). Enums are stored as their values.
+///
+/// Version 1 differs only in "REGN": its payload ends after the faces. A version-1 file loads
+/// with the default RegionPlan on every region; saving writes version 2.
 ///
 /// A pose is 19 f64: the 4 x 4 matrix of PathPose::pose in column-major order (bottom row
 /// included, so the stored matrix is exactly the one in memory), then the contact x y z (mm).
@@ -58,12 +84,16 @@ std::string encodeProject(const planning::Project& project);
 
 /// @brief Rebuilds a project from .ddfproj content; the exact inverse of encodeProject
 /// (planning::projectsEqual holds between the original and the decoded project).
+/// Reads format versions 1 and 2; skips unknown optional chunks (see encodeProject).
 /// @param bytes whole file content. @param sourceName file name used in messages.
+/// @param report if not null, receives the file's version and the skipped optional chunks.
 /// @throws IoError naming @p sourceName and the problem if the content is empty, truncated
 /// (the message names the chunk where it ends), not a project file, of a newer format version,
-/// damaged (checksum mismatch), holds an unknown or misplaced chunk, a chunk whose payload does
-/// not parse, or values that violate planning::validateProject (the InvalidInput is nested).
-planning::Project decodeProject(std::string_view bytes, const std::string& sourceName);
+/// damaged (checksum mismatch), holds an unknown upper-case or a misplaced chunk, a chunk whose
+/// payload does not parse, or values that violate planning::validateProject (the InvalidInput
+/// is nested).
+planning::Project decodeProject(std::string_view bytes, const std::string& sourceName,
+                                ProjectReadReport* report = nullptr);
 
 /// @brief Writes @p project to @p path atomically (temporary file in the same directory +
 /// rename): on any failure the previous content of @p path, if any, is left unchanged.
@@ -71,8 +101,10 @@ planning::Project decodeProject(std::string_view bytes, const std::string& sourc
 /// @throws IoError if the file cannot be written (missing directory, disk full, ...).
 void writeProject(const planning::Project& project, const std::filesystem::path& path);
 
-/// @brief Reads a .ddfproj file written by writeProject.
+/// @brief Reads a .ddfproj file written by writeProject (any version decodeProject reads).
+/// @param report if not null, receives the file's version and the skipped optional chunks.
 /// @throws IoError if the file is missing or unreadable, or as decodeProject.
-planning::Project readProject(const std::filesystem::path& path);
+planning::Project readProject(const std::filesystem::path& path,
+                              ProjectReadReport* report = nullptr);
 
 }  // namespace ddfcam::io

@@ -11,8 +11,23 @@
 
 namespace ddfcam::planning {
 
+/// @brief How computeCurvature() estimates the curvature.
+enum class CurvatureMethod {
+  /// VertexQuadricFit when every face of the DDF is flat (hasFlatFaces(): a converted triangle
+  /// mesh before any cut), else RasterDifferences.
+  Automatic,
+  /// Eq. 8.2 finite differences of the heights over the raster (smooth DDFs).
+  RasterDifferences,
+  /// Quadric fits at the support vertices, blended over the faces (computeVertexCurvature()).
+  VertexQuadricFit
+};
+
 /// @brief Options of computeCurvature().
 struct CurvatureParams {
+  /// Estimation method (default Automatic). A DDF converted from a mesh is flat inside every
+  /// face: its raster differences see only the creases at the seams, so the automatic choice
+  /// fits the vertices instead.
+  CurvatureMethod method = CurvatureMethod::Automatic;
   /// Difference step d of eq. 8.2 in raster steps; 0 picks automaticCurvatureStep(m) (default 0).
   int step = 0;
   /// A point is flagged umbilic / near-isotropic when k_max - k_min <= umbilicTolerance *
@@ -45,6 +60,8 @@ struct CurvatureField {
   /// 1 where the point is umbilic or near-isotropic (directions meaningless), else 0.
   std::vector<std::uint8_t> umbilic;
   int step = 1;  ///< the difference step d actually used, raster steps
+  /// The method actually used (never Automatic).
+  CurvatureMethod method = CurvatureMethod::RasterDifferences;
 
   /// @brief Number of entries (F * pointsPerFace).
   std::size_t size() const { return kMax.size(); }
@@ -54,17 +71,24 @@ struct CurvatureField {
 /// round((m - 1) * delta)) with delta = (48 * 2^-24)^(1/4) ~ 0.041 the parameter step that
 /// balances the truncation error of the central second difference (~ h'''' delta^2 / 12) with
 /// the float rounding of the heights (~ 4 * 2^-24 / delta^2) for h'''' ~ 1 over a face, so that
-/// high m does not corrupt the directions (fig. 8.8). m = 17..37 -> 1, 50 -> 2, 100 -> 4.
+/// high m does not corrupt the directions (fig. 8.8). m = 17..37 -> 1, 50 -> 2, 100 -> 4. The
+/// fourth-order stencils of computeCurvature() keep this rule: on z = sin x sin y their measured
+/// error (truncation ~ delta^4, rounding ~ 1 / delta^2) is smallest near delta ~ 0.044, where
+/// the rounding floor is ~7e-6 1/mm rms.
 int automaticCurvatureStep(int m);
 
 /// @brief Principal curvatures and directions of @p ddf at every raster point from its own
-/// parametric form q(u, v) = g + h v (eq. 8.2): first and second fundamental forms by central
-/// differences of h with step d over the raster lattice. Near support edges the stencil
-/// continues into the neighbouring faces: the missing heights are those of the face's own
-/// (affinely extended) stubble lines where they meet the neighbouring face's surface, with
-/// that surface interpolated by cubic polynomials over its raster, so seams get the same
-/// symmetric stencil as the interior. On the outer boundary of an open support the heights are
-/// extrapolated by the cubic of the nearest raster cells.
+/// parametric form q(u, v) = g + h v (eq. 8.2): first and second fundamental forms from
+/// fourth-order central differences of h (5 points with step d along the lattice directions u,
+/// v and u - v, reaching 2 d steps), so k converges as O(spacing^4) until the float rounding of
+/// the heights takes over. Near support edges the stencil continues into the neighbouring
+/// faces: the missing heights are those of the face's own (affinely extended) stubble lines
+/// where they meet the neighbouring face's surface, with that surface interpolated by
+/// polynomials of degree min(6, m - 1) over its raster, so seams get the same symmetric stencil
+/// and the same accuracy as the interior. On the outer boundary of an open support the heights
+/// are extrapolated by the cubic of the nearest raster cells (lower accuracy there).
+/// With params.method VertexQuadricFit, or Automatic on a DDF whose faces are all flat, the
+/// result is computeVertexCurvature() instead (params.step is then not used).
 /// @throws InvalidInput if params.step < 0 or the step is too large for the raster (3 d > m-1
 /// needs m >= 4 and d <= (m - 1) / 3), or the DDF has no faces.
 /// @throws Cancelled if params.progress asks to stop.

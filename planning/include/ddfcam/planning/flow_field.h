@@ -5,18 +5,28 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/planning/curvature.h>
+#include <ddfcam/planning/flow_field_source.h>
 #include <ddfcam/planning/line_field.h>
 #include <ddfcam/progress.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace ddfcam::planning {
 
-/// @brief Where the raw tool flow direction comes from.
-enum class FlowFieldSource {
-  MaxCurvatureDirection,  ///< CurvatureField::dirMax
-  MinCurvatureDirection,  ///< CurvatureField::dirMin
-  FixedDirection          ///< FlowFieldParams::fixedDirection projected onto the tangent plane
+/// @brief How flowField() solves the smoothing least-squares problem.
+enum class FlowFieldSolver {
+  /// Coarse to fine (default): the points are grouped into aggregates of about 15 neighbours,
+  /// level after level, down to at most FlowFieldParams::directSolveLimit points, which Ceres
+  /// solves by sparse Cholesky; each finer level starts from the prolongated coarse solution
+  /// (smoothed by damped Jacobi, scaled by an exact line search) and runs
+  /// FlowFieldParams::relaxationSweeps symmetric Gauss-Seidel sweeps. Fast, approximate: on
+  /// the fig. 8.16 part within about 2 degrees of Direct (tests/bench); more near
+  /// singularities, whose position may shift by a raster spacing.
+  Multilevel,
+  /// One Ceres sparse Cholesky (CHOLMOD) solve of the whole problem: the exact reference,
+  /// seconds on the 127,500-point fig. 8.16 part.
+  Direct
 };
 
 /// @brief Options of flowField().
@@ -35,8 +45,33 @@ struct FlowFieldParams {
   /// sqrt(point area) (default true): scale-invariant, and umbilic regions are left to the
   /// smoothness term. When false, and for FixedDirection, every defined point has weight 1.
   bool anisotropyWeighting = true;
-  /// Largest number of Ceres iterations (default 10; the problem is linear, so 1-3 suffice).
+  /// Largest number of Ceres iterations of the Direct solve (default 10; the problem is
+  /// linear, so 1-3 suffice).
   int iterations = 10;
+  /// Support faces of the region to solve, one entry per face, non-zero = in the region
+  /// (default empty: every face). Only the region's raster points (those with a copy on a
+  /// region face) are computed and set, at all their copies; every other copy stays zero
+  /// (undefined). The smoothness term couples region points only.
+  std::vector<std::uint8_t> faceMask;
+  /// Directions drawn by the user for FlowFieldSource::UserStrokes: polylines on or near the
+  /// surface, mm, part frame; the order of the points of a stroke does not matter (default
+  /// none). With smoothing, raster points within strokeRadiusSpacings of a stroke are tied
+  /// (weight 1) to the tangent of the nearest stroke segment projected onto their tangent
+  /// plane, and the smoothness term fills in the rest (harmonic interpolation); if no point is
+  /// within reach, every point is tied to its nearest segment. Without smoothing every point
+  /// takes the projected tangent of its nearest segment.
+  std::vector<std::vector<ddf::Vec3>> strokes;
+  /// Reach of a stroke's data term, in raster spacings (mean lattice edge length), > 0
+  /// (default 2).
+  double strokeRadiusSpacings = 2.0;
+  /// Solver of the smoothing problem (default Multilevel).
+  FlowFieldSolver solver = FlowFieldSolver::Multilevel;
+  /// Multilevel: symmetric Gauss-Seidel sweeps on every level above the coarsest, >= 0
+  /// (default 10); more is more accurate and slower.
+  int relaxationSweeps = 10;
+  /// Multilevel: the coarsest level, solved by Ceres' sparse Cholesky, has at most this many
+  /// points, >= 1 (default 20000: one coarse level on the fig. 8.16 part, none on small parts).
+  int directSolveLimit = 20000;
   /// Progress in [0, 1]; returning false cancels (default: none).
   ProgressCallback progress;
 };
@@ -48,15 +83,20 @@ struct FlowFieldParams {
 /// projected onto the point's tangent plane (normal: area-weighted normal of the incident
 /// raster triangles) and averaged as doubled angles e^{2 i a}, so the result never depends on
 /// the sign of any input direction. A point whose projections vanish or cancel is undefined
-/// (zero vector). With smoothing, Ceres minimises over one doubled-angle vector z_p in R^2 per
-/// point sum_p |w_p (z_p - e^{2 i a_p})|^2 + lambda sum_edges |z_q - e^{2 i rho_pq} z_p|^2 over the
-/// lattice edges (rho_pq: discrete Levi-Civita transport along the edge), then normalises:
-/// close to the raw field where it is weighted strongly, smooth (harmonic) where it is not.
-/// Undefined raw points get weight 0 and are filled by the smoothness term.
+/// (zero vector). With smoothing, the solver (FlowFieldParams::solver) minimises over one
+/// doubled-angle vector z_p in R^2 per point sum_p |w_p (z_p - e^{2 i a_p})|^2 + lambda sum_edges
+/// |z_q - e^{2 i rho_pq} z_p|^2 over the lattice edges (rho_pq: discrete Levi-Civita transport
+/// along the edge), then normalises: close to the raw field where it is weighted strongly, smooth
+/// (harmonic) where it is not. Undefined raw points get weight 0 and are filled by the smoothness
+/// term; a connected part of the region without any data (e.g. far from all strokes) stays
+/// undefined.
 /// @param curvature computeCurvature(ddf) or compatible (F * pointsPerFace entries); only the
-/// size is checked for FixedDirection.
+/// size is checked for FixedDirection and UserStrokes.
 /// @throws InvalidInput if the curvature size does not match the DDF, the DDF has no faces, the
-/// fixed direction is zero or not finite, smoothnessWeight < 0 or iterations < 1.
+/// fixed direction is zero or not finite, smoothnessWeight < 0, iterations < 1, the face mask
+/// size is neither 0 nor the face count, UserStrokes has no stroke with two distinct points or
+/// a non-finite point, strokeRadiusSpacings <= 0, relaxationSweeps < 0 or
+/// directSolveLimit < 1.
 /// @throws Cancelled if params.progress asks to stop.
 LineField flowField(const ddf::DisplacementField& ddf, const CurvatureField& curvature,
                     const FlowFieldParams& params = {});

@@ -4,6 +4,7 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/triangle_mesh.h>
+#include <ddfcam/planning/region_plan.h>
 #include <ddfcam/planning/tool.h>
 #include <ddfcam/planning/tool_path.h>
 
@@ -31,6 +32,7 @@ struct Region {
   std::string name;                                 ///< shown in lists
   std::vector<int> faces;                           ///< support face indices, ascending, unique
   std::array<float, 3> color = {0.9f, 0.6f, 0.2f};  ///< display colour, RGB in [0, 1]
+  RegionPlan plan;                                  ///< tool, flow field, spacing, feed
 
   bool operator==(const Region&) const = default;
 };

@@ -8,6 +8,7 @@
 #include <ddfcam/progress.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace ddfcam::planning {
@@ -36,6 +37,10 @@ struct StreamlineParams {
   /// Distance to existingPaths at which the line stops (tested at every point after the seed),
   /// mm; 0 disables the test (default 0).
   double nearPathDistanceMm = 0.0;
+  /// Support faces the line may run on, one entry per face (non-zero: allowed), e.g. the
+  /// faces of one region; the line stops where it would enter a face that is not allowed.
+  /// Empty: every face (default).
+  std::vector<std::uint8_t> faceMask;
   /// Progress in [0, 1] (fraction of maxLengthMm or of the seeds); returning false cancels
   /// (default: none).
   ProgressCallback progress;
@@ -46,6 +51,7 @@ struct Streamline {
   /// Why an end of the line stopped.
   enum StopReason {
     Boundary,          ///< reached an open edge of the support
+    RegionBoundary,    ///< reached the edge of the faces allowed by StreamlineParams::faceMask
     ClosedLoop,        ///< came back to the seed (then only one direction is traced)
     Singularity,       ///< undefined or incoherent field (umbilic, singular point)
     NearExistingPath,  ///< closer than nearPathDistanceMm to an existing path
@@ -77,10 +83,41 @@ struct Streamline {
 /// @param field line field laid out like ddf.allHeights() (zero entries: undefined).
 /// @param seed a location on the surface (face, bary; h and point are recomputed).
 /// @throws InvalidInput if the field size is wrong, the seed face is out of range or its
-/// barycentric coordinates are not finite, or a length or step parameter is negative.
+/// barycentric coordinates are not finite, a length or step parameter is negative, or the
+/// face mask is not empty and not sized like the faces. A seed on a face outside the mask
+/// gives a one-point line stopped at RegionBoundary at both ends.
 /// @throws Cancelled if params.progress asks to stop.
 Streamline traceStreamline(const ddf::DisplacementField& ddf, const LineField& field,
                            const ddf::SurfaceLocation& seed, const StreamlineParams& params = {});
+
+/// @brief The streamline tracers of sec. 8.3.
+enum class StreamlineMethod {
+  Rk4,         ///< traceStreamline(): RK4 in the support faces' parameter domains
+  RasterWalk,  ///< traceStreamlineRasterWalk(): raster walk, error compensation, low-pass
+  Continuous   ///< traceStreamlineContinuous(): 3D steps re-projected by V-projection
+};
+
+/// @brief The streamline through @p seed traced by @p method with that method's default
+/// options (RasterWalkParams, ContinuousStreamlineParams); stops, sign rule and joining are the
+/// same for every method (see traceStreamline()).
+/// @throws InvalidInput, Cancelled as traceStreamline(); InvalidInput for an unknown method.
+Streamline traceStreamlineWith(StreamlineMethod method, const ddf::DisplacementField& ddf,
+                               const LineField& field, const ddf::SurfaceLocation& seed,
+                               const StreamlineParams& params = {});
+
+struct RasterWalkParams;
+struct ContinuousStreamlineParams;
+
+/// @brief As above with the method's own options (declared in streamline_raster_walk.h and
+/// streamline_continuous.h); the options of the other methods are ignored. Pass a crust hash
+/// in @p continuous when tracing many lines with the continuous method.
+Streamline traceStreamlineWith(StreamlineMethod method, const ddf::DisplacementField& ddf,
+                               const LineField& field, const ddf::SurfaceLocation& seed,
+                               const StreamlineParams& params, const RasterWalkParams& walk,
+                               const ContinuousStreamlineParams& continuous);
+
+/// @brief Short lower-case name of @p method ("rk4", "raster-walk", "continuous").
+const char* streamlineMethodName(StreamlineMethod method);
 
 /// @brief A family of streamlines of @p field seeded along one streamline of
 /// @p transverseField (figs. 8.11/8.13): the transverse line through @p seed is traced, seeds

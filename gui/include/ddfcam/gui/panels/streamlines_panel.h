@@ -1,33 +1,58 @@
 // SPDX-License-Identifier: MIT
-// ddfcam gui: the Streamlines panel: tool paths along lines of curvature, seeded by click.
+// ddfcam gui: the Streamlines panel: tool flow field display and tool paths along it.
 #pragma once
 
 #include <ddfcam/ddf/surface_sampling.h>
 #include <ddfcam/gui/workbench.h>
+#include <ddfcam/planning/flow_field.h>
 #include <ddfcam/planning/line_field.h>
+#include <ddfcam/planning/region_plan.h>
 #include <ddfcam/planning/streamline.h>
 
+#include <QPointF>
+#include <cstdint>
+
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QLayout;
+class QPushButton;
+class QSlider;
 class QToolButton;
 
 namespace ddfcam::gui {
 
+class FlowFieldDisplay;
+class PathListWidget;
+struct FieldChoice;
 struct PickResult;
 
-/// @brief Plans tool paths along the tool flow field (issue 4, first steps): the field follows
-/// the k_max or k_min lines of curvature (planning::flowField, optionally smoothed with Ceres);
-/// with "Seed by click" on, a click on the part traces a streamline through the picked point
-/// (planning::traceStreamline) and adds it as a tool path for the first tool; "Seed family"
-/// seeds streamlines every w mm along the transverse line through the last pick
-/// (planning::seedAlongTransverse, fig. 8.11). The field is computed as a job and kept until
-/// the part or its heights change; every path is one undoable edit.
+/// @brief Plans tool paths along the tool flow field (sec. 8.1/8.3, issue 4). The field
+/// (planning::flowField) follows k_max, k_min, a fixed direction projected onto the surface or
+/// strokes the user draws on the part ("Draw direction"), optionally smoothed with Ceres, on
+/// the whole part or on one region (its faces bound the field and the lines, its plan gives
+/// the defaults, tool and linking order). The field, both principal directions and the
+/// field's singularities are shown as glyph overlays (FlowFieldDisplay).
+/// Seeding: a click traces one streamline (planning::traceStreamline); a family is seeded
+/// every w mm along the transverse line through the last pick (planning::seedAlongTransverse,
+/// fig. 8.11); "Cover" fills the region with evenly spaced lines d_sep apart
+/// (planning::evenlySpacedStreamlines). Lines of a family or cover are ordered and oriented by
+/// planning::linkStreamlines (zig-zag or one direction) when "link" is on. Each seeding adds
+/// one path (one undo step). The smoothing slider previews planning::smoothMovingAverage of
+/// the selected path's raw lines live (overlay kPreviewOverlay, no undo step); "Apply"
+/// replaces the path by the smoothed lines put back on the surface (one undo step); "Fair"
+/// replaces it by planning::fairStreamline of the raw lines (a job, one undo step). The path
+/// list shows every path's line count, cutting and idle length and a total. Fields and
+/// tracing run as cancellable jobs; the field is kept until the part, its heights or the
+/// choices change.
 class StreamlinesPanel : public Panel {
   Q_OBJECT
 
@@ -37,30 +62,121 @@ class StreamlinesPanel : public Panel {
   QString title() const override { return tr("Streamlines"); }
   QString id() const override { return "streamlines"; }
 
+  /// Overlay showing the smoothed lines of the selected path while the slider is not zero.
+  static constexpr const char* kPreviewOverlay = "smoothing preview";
+
+  /// @brief Selects the raw field: k_max, k_min, a fixed direction (x, y or z axis, else the
+  /// nearest of them) or the drawn strokes.
+  void setFieldSource(planning::FlowFieldSource source,
+                      const ddf::Vec3& fixedDirection = ddf::Vec3::UnitX());
+  /// @brief Turns Ceres smoothing of the field on or off, with weight lambda.
+  void setFieldSmoothing(bool on, double weight = 0.02);
+  /// @brief Restricts field and lines to region @p index of the project (-1: whole part) and
+  /// takes the region plan's flow source, smoothing and spacing as the panel's settings.
+  void setRegion(int index);
+  /// @brief Computes the field if needed (a job) and shows its glyphs.
+  /// @return true if shown or the job started.
+  bool showField();
+  /// @brief The glyph overlays (toggles, last glyphs shown, singularities).
+  FlowFieldDisplay& fieldDisplay() const { return *display_; }
+  /// @brief The current tool flow field, or null before it was computed.
+  const planning::LineField* flowField() const;
+
+  /// Overlay showing the direction strokes drawn by the user.
+  static constexpr const char* kStrokeOverlay = "direction strokes";
+  /// @brief Turns "Draw direction" on or off: while on, a left-button drag on the part records
+  /// a stroke of picked surface points (instead of turning the camera); each finished stroke
+  /// is added with addStroke().
+  void setDrawDirection(bool on);
+  /// @brief Adds a direction stroke (a polyline on the surface, mm, part frame, >= 2 points)
+  /// and selects the drawn-strokes field (FlowFieldSource::UserStrokes).
+  void addStroke(std::vector<ddf::Vec3> stroke);
+  /// @brief Removes all drawn strokes.
+  void clearStrokes();
+  /// @brief The drawn strokes.
+  const std::vector<std::vector<ddf::Vec3>>& strokes() const { return strokes_; }
+
   /// @brief Turns click seeding on or off (the "Seed by click" button).
   void setSeedByClick(bool on);
-  /// @brief Adds the streamline through @p seed as a path (computing the field first if
-  /// needed, as a job). @return true if the path was added or the job started.
+  /// @brief Adds the streamline through @p seed as a path. @return true if the job started.
   bool seedAt(const ddf::SurfaceLocation& seed);
   /// @brief Adds a family of streamlines seeded along the transverse line through the last
-  /// pick, spaced as set. @return true if added or the job started.
+  /// pick, spaced as set. @return true if the job started.
   bool seedFamily();
+  /// @brief Covers the region (or the part) with evenly spaced lines @p dSepMm apart (> 0,
+  /// planning::evenlySpacedStreamlines, Jobard-Lefer). @return true if the job started.
+  bool coverRegion(double dSepMm);
+
+  /// @brief Sets the moving-average half window k of the slider (0: off); updates the preview.
+  void setSmoothingWindow(int halfWindow);
+  /// @brief Replaces the selected path by its raw lines smoothed with the slider's window (one
+  /// undo step). @return true if the path was replaced.
+  bool applySmoothing();
+  /// @brief Replaces the selected path by its raw lines faired with Ceres
+  /// (planning::fairStreamline) within @p deviationMm of the raw lines, as a job (one undo
+  /// step). @return true if the job started.
+  bool fairSelected(double deviationMm);
+  /// @brief The path list.
+  PathListWidget& pathList() const { return *pathList_; }
 
   /// @brief The line fields paths follow, cached per state of the part's heights.
   struct Fields;
 
- private:
-  void onPicked(const PickResult& pick);
-  bool withFields(const std::function<void()>& then);
-  void addPath(std::vector<planning::Streamline> lines, const QString& name);
+ protected:
+  /// Records strokes from mouse drags on the 3D view while "Draw direction" is on.
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
+ private:
+  void appendStrokePoint(QPointF widgetPos);
+  void showStrokes();
+  /// Traces lines on a copy of the part with the current fields (worker thread).
+  using LineWork = std::function<std::vector<planning::Streamline>(
+      const ddf::DisplacementField& part, const Fields& fields, const ProgressCallback& progress)>;
+  QWidget* buildFieldGroup();
+  QLayout* buildDrawRow(QWidget* group);
+  QLayout* buildGlyphToggles(QWidget* group);
+  QWidget* buildSeedGroup();
+  QWidget* buildSmoothingGroup();
+  void onPicked(const PickResult& pick);
+  void refreshRegions();
+  FieldChoice currentChoice() const;
+  bool runWithFields(const QString& title, LineWork work, const QString& pathName);
+  void adoptFields(std::shared_ptr<const Fields> fields);
+  void addPath(std::vector<planning::Streamline> lines, const QString& name);
+  void replaceSelected(std::vector<planning::Streamline> lines, const QString& what);
+  const std::vector<planning::Streamline>* selectedRawLines(int* index) const;
+  /// The plan of the selected region, null for the whole part.
+  const planning::RegionPlan* selectedPlan() const;
+  void updatePreview();
+
+  QComboBox* region_ = nullptr;
   QComboBox* direction_ = nullptr;
   QCheckBox* smooth_ = nullptr;
+  QDoubleSpinBox* weight_ = nullptr;
   QToolButton* seedByClick_ = nullptr;
+  QToolButton* draw_ = nullptr;
+  QObject* viewWidget_ = nullptr;  ///< the 3D view whose mouse events draw strokes (compared only)
+  std::vector<std::vector<ddf::Vec3>> strokes_;
+  std::optional<std::vector<ddf::Vec3>> stroke_;  ///< the stroke being drawn
+  bool drawing_ = false;                          ///< a pick of a stroke is under way
   QDoubleSpinBox* spacing_ = nullptr;
+  QDoubleSpinBox* dSep_ = nullptr;
+  QCheckBox* link_ = nullptr;
+  QSlider* window_ = nullptr;
+  QLabel* windowLabel_ = nullptr;
+  QDoubleSpinBox* deviation_ = nullptr;
+  std::vector<QCheckBox*> glyphToggles_;  ///< flow, k_max, k_min, singularities
   QLabel* status_ = nullptr;
-  std::shared_ptr<Fields> fields_;
+  PathListWidget* pathList_ = nullptr;
+  std::unique_ptr<FlowFieldDisplay> display_;
+  std::shared_ptr<const Fields> fields_;
   std::optional<ddf::SurfaceLocation> lastPick_;
+  /// Counts changes of the part or its heights: a job's result for an older state is dropped.
+  std::uint64_t generation_ = 0;
+  /// Raw (unsmoothed) lines of the paths this panel made, by path name.
+  std::map<std::string, std::vector<planning::Streamline>> rawLines_;
+  /// Idle length of the linking of the paths this panel linked, by path name, mm.
+  std::map<std::string, double> linkedIdle_;
 };
 
 }  // namespace ddfcam::gui

@@ -1,0 +1,294 @@
+// SPDX-License-Identifier: MIT
+// ddfcam-cli plan: streamline tool paths over a whole part, linked and written as CSV.
+#include <ddfcam/ddf/analytic_generators.h>
+#include <ddfcam/error.h>
+#include <ddfcam/io/part_loader.h>
+#include <ddfcam/io/tool_path_csv.h>
+#include <ddfcam/planning/curvature.h>
+#include <ddfcam/planning/flow_field.h>
+#include <ddfcam/planning/path_linking.h>
+#include <ddfcam/planning/streamline_fairing.h>
+#include <ddfcam/planning/streamline_path.h>
+
+#include "arguments.h"
+#include "commands.h"
+#include "console.h"
+#include "plan_lines.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+namespace ddfcam::cli {
+namespace {
+
+constexpr const char* kHelp =
+    "usage: ddfcam-cli plan PART -o PATHS.csv [options]\n\n"
+    "Plans streamline tool paths over the whole of PART (a .ddf file, a .stl/.obj/.ply/.off mesh\n"
+    "converted with heights 0, or 'demo' for the built-in demo part): curvature, flow field,\n"
+    "lines SPACING apart, optional smoothing and fairing, tool poses, linking; writes the linked\n"
+    "program as a tool-path CSV (columns path, point, x y z mm, tool axis i j k, surface normal,\n"
+    "feed mm/min, move cut|link|rapid; path = move index) and prints a summary.\n\n"
+    "options:\n"
+    "  -o, --output FILE        output CSV (required)\n"
+    "  --field kmax|kmin|fixed  raw flow direction (default kmax)\n"
+    "  --direction X,Y,Z        direction of --field fixed, part frame (default 1,0,0)\n"
+    "  --no-smooth              use the raw field (default: smoothed, weight 0.02)\n"
+    "  --method rk4|walk|continuous  streamline tracing (default rk4)\n"
+    "  --seeding transverse|even     seeds along one transverse line through the centre, or\n"
+    "                           evenly spaced lines (Jobard-Lefer; rk4 only) (default: even\n"
+    "                           with rk4, transverse with walk and continuous)\n"
+    "  --spacing MM             distance between lines (default: bounding-box diagonal / 40);\n"
+    "                           every line stops after 4 bounding-box diagonals\n"
+    "  --smooth-window K        moving average of half window K, kept on the surface (default 0)\n"
+    "  --fair                   fair every line (bending energy, 0.05 mm deviation)\n"
+    "  --linking zigzag|one-way order of the lines (default zigzag); links up to 2 spacings\n"
+    "                           long stay on the surface, longer ones lift by 1 mm (by the\n"
+    "                           bounding-box diagonal / 20 on smaller parts)\n"
+    "  --point contact|reference  x y z columns: contact point or tool centre (default contact)\n"
+    "  --tool roll|ball         tool shape (default roll, width 2 radius)\n"
+    "  --radius MM              tool radius (default 5)\n"
+    "  --feed MM_PER_MIN        feed rate (default 1000)\n"
+    "  --decimals N             digits after the decimal point in the CSV (default 6)\n"
+    "  -h, --help               show this help\n";
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+/// Everything the command line chooses.
+struct PlanOptions {
+  std::filesystem::path input;
+  std::filesystem::path output;
+  planning::FlowFieldParams field;
+  planning::StreamlineMethod method = planning::StreamlineMethod::Rk4;
+  Seeding seeding = Seeding::Transverse;
+  std::optional<double> spacingMm;
+  int smoothWindow = 0;
+  bool fair = false;
+  planning::LinkingOrder linking = planning::LinkingOrder::ZigZag;
+  io::CsvPointKind point = io::CsvPointKind::Contact;
+  planning::Tool tool;
+  double feedMmPerMin = 1000.0;
+  int decimals = 6;
+};
+
+/// The value of @p name among @p names (index), or @p fallback if the option is absent.
+template <std::size_t N>
+int choice(const Arguments& args, const std::string& name, const std::array<const char*, N>& names,
+           int fallback) {
+  const std::optional<std::string> value = args.value(name);
+  if (!value) return fallback;
+  std::string list;
+  for (std::size_t i = 0; i < N; ++i) {
+    if (*value == names[i]) return static_cast<int>(i);
+    if (i > 0) list += '|';
+    list += names[i];
+  }
+  throw UsageError("--" + name + " " + *value + ": expected " + list);
+}
+
+ddf::Vec3 parseDirection(const std::string& text) {
+  ddf::Vec3 v;
+  const char* at = text.data();
+  const char* end = text.data() + text.size();
+  for (int i = 0; i < 3; ++i) {
+    const auto [next, error] = std::from_chars(at, end, v[i]);
+    const bool last = i == 2;
+    if (error != std::errc() || (last ? next != end : (next == end || *next != ',')))
+      throw UsageError("--direction " + text + ": expected three numbers X,Y,Z");
+    at = next + 1;
+  }
+  if (!v.allFinite() || v.squaredNorm() == 0.0)
+    throw UsageError("--direction " + text + ": must be finite and non-zero");
+  return v;
+}
+
+void parseField(const Arguments& args, PlanOptions& o) {
+  static constexpr std::array<const char*, 3> kFields = {"kmax", "kmin", "fixed"};
+  static constexpr std::array<planning::FlowFieldSource, 3> kSources = {
+      planning::FlowFieldSource::MaxCurvatureDirection,
+      planning::FlowFieldSource::MinCurvatureDirection, planning::FlowFieldSource::FixedDirection};
+  o.field.source = kSources[choice(args, "field", kFields, 0)];
+  if (const auto d = args.value("direction")) {
+    if (o.field.source != planning::FlowFieldSource::FixedDirection)
+      throw UsageError("--direction needs --field fixed");
+    o.field.fixedDirection = parseDirection(*d);
+  }
+  o.field.smoothing = !args.has("no-smooth");
+}
+
+void parseLines(const Arguments& args, PlanOptions& o) {
+  static constexpr std::array<const char*, 3> kMethods = {"rk4", "walk", "continuous"};
+  static constexpr std::array<planning::StreamlineMethod, 3> kMethodValues = {
+      planning::StreamlineMethod::Rk4, planning::StreamlineMethod::RasterWalk,
+      planning::StreamlineMethod::Continuous};
+  o.method = kMethodValues[choice(args, "method", kMethods, 0)];
+  static constexpr std::array<const char*, 2> kSeedings = {"transverse", "even"};
+  // Even seeding covers closed free forms; one transverse line stops at the first singularity.
+  const int byMethod = o.method == planning::StreamlineMethod::Rk4 ? 1 : 0;
+  o.seeding =
+      choice(args, "seeding", kSeedings, byMethod) == 0 ? Seeding::Transverse : Seeding::Even;
+  // evenlySpacedStreamlines traces with RK4 only; another method would be silently ignored.
+  if (o.seeding == Seeding::Even && o.method != planning::StreamlineMethod::Rk4)
+    throw UsageError("--method " + *args.value("method") +
+                     " is not available with --seeding even (it traces with rk4 only)");
+  o.spacingMm = args.positiveNumber("spacing");
+  o.smoothWindow = args.integer("smooth-window", 0, 0, 1000);
+  o.fair = args.has("fair");
+  static constexpr std::array<const char*, 2> kLinkings = {"zigzag", "one-way"};
+  o.linking = choice(args, "linking", kLinkings, 0) == 0 ? planning::LinkingOrder::ZigZag
+                                                         : planning::LinkingOrder::OneDirection;
+}
+
+void parseOutput(const Arguments& args, PlanOptions& o) {
+  static constexpr std::array<const char*, 2> kPoints = {"contact", "reference"};
+  o.point = choice(args, "point", kPoints, 0) == 0 ? io::CsvPointKind::Contact
+                                                   : io::CsvPointKind::ToolReference;
+  static constexpr std::array<const char*, 2> kTools = {"roll", "ball"};
+  const bool ball = choice(args, "tool", kTools, 0) == 1;
+  const double radius = args.positiveNumber("radius").value_or(5.0);
+  char name[64];
+  std::snprintf(name, sizeof name, "%s R%g", ball ? "ball" : "roll", radius);
+  o.tool = {name, ball ? planning::ToolKind::Sphere : planning::ToolKind::CylinderRoll, radius,
+            2.0 * radius, 48};
+  o.feedMmPerMin = args.positiveNumber("feed").value_or(1000.0);
+  o.decimals = args.integer("decimals", 6, 0, 17);
+}
+
+PlanOptions parseOptions(std::span<const std::string> words) {
+  static const std::array<OptionSpec, 15> kSpecs = {
+      OptionSpec{"output", 'o', true},     OptionSpec{"field", '\0', true},
+      OptionSpec{"direction", '\0', true}, OptionSpec{"no-smooth", '\0', false},
+      OptionSpec{"method", '\0', true},    OptionSpec{"seeding", '\0', true},
+      OptionSpec{"spacing", '\0', true},   OptionSpec{"smooth-window", '\0', true},
+      OptionSpec{"fair", '\0', false},     OptionSpec{"linking", '\0', true},
+      OptionSpec{"point", '\0', true},     OptionSpec{"tool", '\0', true},
+      OptionSpec{"radius", '\0', true},    OptionSpec{"feed", '\0', true},
+      OptionSpec{"decimals", '\0', true}};
+  const Arguments args(words, kSpecs, "plan");
+  args.expectPositionals(1, "an input part (.ddf, mesh or 'demo')");
+  PlanOptions o;
+  o.input = args.positionals()[0];
+  o.output = args.required("output");
+  parseField(args, o);
+  parseLines(args, o);
+  parseOutput(args, o);
+  return o;
+}
+
+ddf::DisplacementField loadInput(const std::filesystem::path& input) {
+  if (input == "demo") return ddf::demoPart().ddf;
+  io::LoadPartParams load;
+  load.progress = consoleProgress("loading");
+  ddf::DisplacementField part = io::loadPart(input, load);
+  endProgressLine();
+  return part;
+}
+
+double boxDiagonal(const ddf::DisplacementField& part) {
+  Eigen::AlignedBox3d box;
+  for (int v = 0; v < part.vertexCount(); ++v) box.extend(part.position(v));
+  return box.isEmpty() ? 1.0 : box.diagonal().norm();
+}
+
+/// Milliseconds of each stage, for the summary.
+struct StageTimes {
+  double load = 0, curvature = 0, field = 0, lines = 0, paths = 0;
+};
+
+std::vector<planning::Streamline> refineLines(const ddf::DisplacementField& part,
+                                              std::vector<planning::Streamline> lines,
+                                              const PlanOptions& o) {
+  if (o.smoothWindow > 0) lines = smoothOnSurface(part, lines, o.smoothWindow);
+  if (o.fair) {
+    const ProgressCallback progress = consoleProgress("fairing");
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+      reportProgress(progress, static_cast<double>(l) / lines.size());
+      lines[l] = planning::fairStreamline(part, lines[l]);
+    }
+    endProgressLine();
+  }
+  return lines;
+}
+
+void printSummary(const PlanOptions& o, const planning::LinkedPaths& linked, std::size_t rows,
+                  double spacing, const StageTimes& t) {
+  const double cutMin = linked.cuttingLengthMm / o.feedMmPerMin;
+  const double idleMin = linked.idleLengthMm / o.feedMmPerMin;
+  std::printf("  lines: %d, spacing %.4g mm, links: %d (%d lifted)\n", linked.pathCount, spacing,
+              linked.linkCount, linked.liftedLinkCount);
+  std::printf("  cutting length: %.6g mm, idle length: %.6g mm\n", linked.cuttingLengthMm,
+              linked.idleLengthMm);
+  std::printf(
+      "  machining time at %.0f mm/min: %.4g min (cutting %.4g, idle %.4g; rapids "
+      "counted at feed)\n",
+      o.feedMmPerMin, cutMin + idleMin, cutMin, idleMin);
+  std::printf("wrote %s: %zu rows\n", o.output.string().c_str(), rows);
+  std::printf(
+      "  time: load %.0f ms, curvature %.0f ms, field %.0f ms, lines %.0f ms, paths %.0f "
+      "ms\n",
+      t.load, t.curvature, t.field, t.lines, t.paths);
+}
+
+int runPlan(std::span<const std::string> words) {
+  PlanOptions o = parseOptions(words);
+  StageTimes t;
+  Clock::time_point start = Clock::now();
+  const ddf::DisplacementField part = loadInput(o.input);
+  t.load = msSince(start);
+  std::printf("plan on %s: %d faces, m = %d\n", o.input.string().c_str(), part.faceCount(),
+              part.raster().m);
+  start = Clock::now();
+  planning::CurvatureParams curvatureParams;
+  curvatureParams.progress = consoleProgress("curvature");
+  const planning::CurvatureField curvature = planning::computeCurvature(part, curvatureParams);
+  endProgressLine();
+  t.curvature = msSince(start);
+  start = Clock::now();
+  o.field.progress = consoleProgress("flow field");
+  const planning::LineField field = planning::flowField(part, curvature, o.field);
+  endProgressLine();
+  t.field = msSince(start);
+  start = Clock::now();
+  const double diagonal = boxDiagonal(part);
+  const double spacing = o.spacingMm.value_or(diagonal / 40.0);
+  // A longer line winds round and round a closed part (no loop closes exactly on a free form).
+  std::vector<planning::Streamline> lines =
+      refineLines(part,
+                  planLines(part, field, o.seeding, o.method, spacing, 4.0 * diagonal,
+                            consoleProgress("lines")),
+                  o);
+  endProgressLine();
+  t.lines = msSince(start);
+  if (lines.empty()) throw InvalidInput("plan: no line with two points could be traced");
+  start = Clock::now();
+  planning::StreamlinePathParams pathParams;
+  pathParams.feedMmPerMin = o.feedMmPerMin;
+  const planning::ToolPath path =
+      planning::toolPathFromStreamlines(part, lines, o.tool, 0, pathParams);
+  planning::LinkingParams linking;
+  linking.order = o.linking;
+  linking.directLinkMaxMm = 2.0 * spacing;
+  linking.clearanceMm = std::min(1.0, diagonal / 20.0);  // parts in metres are tiny in mm
+  const planning::LinkedPaths linked = planning::linkStreamlines(part, lines, linking);
+  const io::ToolPathCsv table = io::linkedToolPathCsvRows(linked, path, o.point);
+  io::writeToolPathCsv(table, o.output, {.decimals = o.decimals});
+  t.paths = msSince(start);
+  printSummary(o, linked, table.rows.size(), spacing, t);
+  return 0;
+}
+
+}  // namespace
+
+const Command kPlanCommand{"plan", "streamline tool paths over a part, linked, as CSV", kHelp,
+                           &runPlan};
+
+}  // namespace ddfcam::cli

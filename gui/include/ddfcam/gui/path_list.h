@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+// ddfcam gui: the list of tool paths with line counts, cutting and idle lengths and a total.
+#pragma once
+
+#include <ddfcam/planning/project.h>
+
+#include <QWidget>
+
+#include <map>
+#include <string>
+
+class QLabel;
+class QTableWidget;
+
+namespace ddfcam::gui {
+
+/// @brief Length summary of one tool path, from its contacts.
+struct PathLengths {
+  int lines = 0;         ///< number of passes (lines)
+  double cuttingMm = 0;  ///< sum of the contact-polyline lengths of all passes, mm
+  double idleMm = 0;     ///< sum of the straight links from each pass end to the next start, mm
+};
+
+/// @brief Lengths of @p path: passes are ToolPath::passStarts ranges of the contacts.
+PathLengths pathLengths(const planning::ToolPath& path);
+
+/// @brief A table of the project's paths (name, lines, cutting length mm, idle length mm: the
+/// linking report's if set, else the straight gaps between passes) with
+/// a total line below (path count, lines, cutting and idle length). One row per path, in
+/// project order; the selected row picks the path other tools act on.
+class PathListWidget : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit PathListWidget(QWidget* parent = nullptr);
+  /// @brief Rebuilds the rows from @p project; selects the last path when paths were added or
+  /// the selected row is gone, else keeps the selection.
+  void refresh(const planning::Project& project);
+  /// @brief Idle lengths reported by the linking of paths (planning::LinkedPaths::idleLengthMm,
+  /// lifted links included), by path name, mm; they replace the straight gaps of those paths
+  /// in the idle column (marked "linked") from the next refresh on.
+  void setLinkedIdle(std::map<std::string, double> idleMm) { linkedIdle_ = std::move(idleMm); }
+  /// @brief Index of the selected path, -1 if none.
+  int selectedPath() const;
+  /// @brief Selects path @p index (-1: none).
+  void selectPath(int index);
+  QTableWidget* table() const { return table_; }
+  /// @brief The total line, e.g. "3 paths, 17 lines: cutting 412.5 mm, idle 80.2 mm".
+  QString totalText() const;
+
+ signals:
+  /// @brief The selected path changed (-1: none).
+  void selectionChanged(int index);
+
+ private:
+  QTableWidget* table_ = nullptr;
+  QLabel* total_ = nullptr;
+  std::map<std::string, double> linkedIdle_;
+};
+
+}  // namespace ddfcam::gui

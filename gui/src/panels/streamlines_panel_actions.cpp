@@ -1,0 +1,327 @@
+// SPDX-License-Identifier: MIT
+// ddfcam gui: StreamlinesPanel actions: field jobs, seeding, smoothing preview and apply.
+#include <ddfcam/gui/panels/streamlines_panel.h>
+
+#include "streamlines_fields.h"
+
+#include <ddfcam/error.h>
+#include <ddfcam/gui/adapters/poly_data.h>
+#include <ddfcam/gui/document.h>
+#include <ddfcam/gui/document_command.h>
+#include <ddfcam/gui/flow_field_display.h>
+#include <ddfcam/gui/job_runner.h>
+#include <ddfcam/gui/part_scene.h>
+#include <ddfcam/gui/part_view.h>
+#include <ddfcam/gui/path_commands.h>
+#include <ddfcam/gui/path_list.h>
+#include <ddfcam/gui/vtk_view.h>
+#include <ddfcam/planning/evenly_spaced_streamlines.h>
+#include <ddfcam/planning/path_linking.h>
+#include <ddfcam/planning/streamline_fairing.h>
+#include <ddfcam/planning/streamline_path.h>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QPointer>
+#include <QSignalBlocker>
+#include <QSlider>
+
+#include <algorithm>
+
+namespace ddfcam::gui {
+
+namespace {
+
+planning::Streamline reversed(planning::Streamline line) {
+  std::reverse(line.points.begin(), line.points.end());
+  std::swap(line.stop, line.backwardStop);
+  line.seedIndex = line.points.empty() ? 0 : line.points.size() - 1 - line.seedIndex;
+  return line;
+}
+
+/// The lines in machining order and direction (planning::linkStreamlines) and the link report.
+planning::LinkedPaths linkLines(const ddf::DisplacementField& part,
+                                std::vector<planning::Streamline>& lines,
+                                planning::LinkingOrder order) {
+  planning::LinkingParams params;
+  params.order = order;
+  planning::LinkedPaths linked = planning::linkStreamlines(part, lines, params);
+  std::vector<planning::Streamline> ordered;
+  for (const planning::PathMove& move : linked.moves)
+    if (move.kind == planning::MoveKind::Cut)
+      ordered.push_back(move.reversed ? reversed(lines[move.path]) : lines[move.path]);
+  lines = std::move(ordered);
+  return linked;
+}
+
+}  // namespace
+
+bool StreamlinesPanel::runWithFields(const QString& title, LineWork work, const QString& pathName) {
+  const auto& part = workbench().document.project().part;
+  if (!part) {
+    workbench().reportError(title, tr("There is no part."));
+    return false;
+  }
+  const FieldChoice choice = currentChoice();
+  std::shared_ptr<const Fields> cached = fields_ && fields_->choice == choice ? fields_ : nullptr;
+  std::shared_ptr<const planning::CurvatureField> curvature =
+      fields_ ? fields_->curvature : nullptr;
+  auto copy = std::make_shared<ddf::DisplacementField>(*part);
+  QPointer<StreamlinesPanel> self(this);
+  const std::uint64_t generation = generation_;
+  return workbench().jobs.start(title, [=](const ProgressCallback& progress) {
+    std::shared_ptr<const Fields> fields = cached;
+    const double share = fields ? 0.0 : 0.7;
+    if (!fields)
+      fields = computeStreamlineFields(*copy, choice, curvature,
+                                       [&](double f) { return !progress || progress(share * f); });
+    std::vector<planning::Streamline> lines;
+    if (work)
+      lines = work(*copy, *fields,
+                   [&](double f) { return !progress || progress(share + (1.0 - share) * f); });
+    return std::function<void()>(
+        [self, fields, lines = std::move(lines), pathName, generation]() mutable {
+          if (!self || self->generation_ != generation) return;  // computed for another part
+          self->adoptFields(fields);
+          if (!pathName.isEmpty()) self->addPath(std::move(lines), pathName);
+        });
+  });
+}
+
+void StreamlinesPanel::adoptFields(std::shared_ptr<const Fields> fields) {
+  const bool changed = fields_ != fields || !display_->hasFields();
+  fields_ = std::move(fields);
+  if (!changed) return;
+  const auto& part = workbench().document.project().part;
+  if (!part) return;
+  display_->show(*part, fields_->field, *fields_->curvature, fields_->singularities);
+  double indexSum = 0;
+  for (const auto& s : fields_->singularities) indexSum += s.index;
+  status_->setText(tr("Field: %1 singularities, index sum %2")
+                       .arg(fields_->singularities.size())
+                       .arg(indexSum, 0, 'g', 3));
+  workbench().partView.view().requestRender();
+}
+
+bool StreamlinesPanel::showField() {
+  // Showing the field means seeing something: turn the flow glyphs on if nothing is on.
+  if (!display_->isVisible(GlyphField::Flow) && !display_->isVisible(GlyphField::MaxDirection) &&
+      !display_->isVisible(GlyphField::MinDirection)) {
+    const QSignalBlocker block(glyphToggles_[0]);
+    glyphToggles_[0]->setChecked(true);
+    display_->setVisible(GlyphField::Flow, true);
+  }
+  if (fields_ && fields_->choice == currentChoice() && display_->hasFields()) return true;
+  return runWithFields(tr("Compute tool flow field"), nullptr, {});
+}
+
+bool StreamlinesPanel::seedAt(const ddf::SurfaceLocation& seed) {
+  const std::vector<std::uint8_t> mask = currentChoice().faceMask;
+  return runWithFields(
+      tr("Trace streamline"),
+      [seed, mask](const ddf::DisplacementField& part, const Fields& fields,
+                   const ProgressCallback& progress) {
+        planning::StreamlineParams params;
+        params.faceMask = mask;
+        params.progress = progress;
+        return std::vector<planning::Streamline>{
+            planning::traceStreamline(part, fields.field, seed, params)};
+      },
+      tr("streamline"));
+}
+
+bool StreamlinesPanel::seedFamily() {
+  if (!lastPick_) {
+    workbench().reportError(tr("Seed family"), tr("Pick a point on the part first."));
+    return false;
+  }
+  const ddf::SurfaceLocation seed = *lastPick_;
+  const double spacing = spacing_->value();
+  const std::vector<std::uint8_t> mask = currentChoice().faceMask;
+  return runWithFields(
+      tr("Seed streamline family"),
+      [seed, spacing, mask](const ddf::DisplacementField& part, const Fields& fields,
+                            const ProgressCallback& progress) {
+        planning::StreamlineParams params;
+        params.faceMask = mask;
+        params.progress = progress;
+        return planning::seedAlongTransverse(part, fields.field, fields.transverse, seed, spacing,
+                                             params);
+      },
+      tr("streamline family"));
+}
+
+bool StreamlinesPanel::coverRegion(double dSepMm) {
+  if (!(dSepMm > 0)) {
+    workbench().reportError(tr("Cover region"), tr("d_sep must be positive."));
+    return false;
+  }
+  const std::vector<std::uint8_t> mask = currentChoice().faceMask;
+  return runWithFields(
+      tr("Cover region with streamlines"),
+      [dSepMm, mask](const ddf::DisplacementField& part, const Fields& fields,
+                     const ProgressCallback& progress) {
+        planning::EvenSpacingParams params;
+        params.separationMm = dSepMm;
+        params.faceMask = mask;
+        params.progress = progress;
+        return planning::evenlySpacedStreamlines(part, fields.field, params);
+      },
+      tr("coverage"));
+}
+
+void StreamlinesPanel::addPath(std::vector<planning::Streamline> lines, const QString& name) {
+  runUserAction(workbench().reportError, tr("Add %1").arg(name), [&] {
+    Document& document = workbench().document;
+    const planning::Project& p = document.project();
+    std::erase_if(lines, [](const planning::Streamline& l) { return l.points.size() < 2; });
+    const planning::RegionPlan* plan = selectedPlan();
+    QString idle;
+    std::optional<double> linkedIdle;
+    if (link_->isChecked() && lines.size() > 1) {
+      const auto order = plan ? plan->linking : planning::LinkingOrder::ZigZag;
+      const planning::LinkedPaths linked = linkLines(*p.part, lines, order);
+      idle = tr(", linked: idle %1 mm").arg(linked.idleLengthMm, 0, 'f', 1);
+      linkedIdle = linked.idleLengthMm;
+    }
+    // The region's tool if its plan names one, else the project's first (or a new default).
+    const int toolIndex =
+        plan && plan->tool >= 0 && plan->tool < static_cast<int>(p.tools.size()) ? plan->tool : 0;
+    const bool needTool = p.tools.empty();
+    const planning::Tool tool = needTool ? planning::Tool{} : p.tools[toolIndex];
+    planning::StreamlinePathParams params;
+    params.name = QString("%1 %2").arg(name).arg(p.paths.size() + 1).toStdString();
+    planning::ToolPath path =
+        planning::toolPathFromStreamlines(*p.part, lines, tool, toolIndex, params);
+    double length = 0;
+    for (const auto& line : lines) length += line.lengthMm;
+    rawLines_[params.name] = lines;
+    if (linkedIdle)
+      linkedIdle_[params.name] = *linkedIdle;
+    else
+      linkedIdle_.erase(params.name);
+    pathList_->setLinkedIdle(linkedIdle_);
+    document.push(std::make_unique<AddPathCommand>(document, std::move(path),
+                                                   needTool ? std::optional(tool) : std::nullopt));
+    status_->setText(tr("%1: %2 lines, cutting %3 mm%4")
+                         .arg(QString::fromStdString(params.name))
+                         .arg(lines.size())
+                         .arg(length, 0, 'f', 1)
+                         .arg(idle));
+  });
+}
+
+const planning::RegionPlan* StreamlinesPanel::selectedPlan() const {
+  const int region = region_->currentData().isValid() ? region_->currentData().toInt() : -1;
+  const auto& regions = workbench().document.project().regions;
+  return region >= 0 && region < static_cast<int>(regions.size()) ? &regions[region].plan : nullptr;
+}
+
+const std::vector<planning::Streamline>* StreamlinesPanel::selectedRawLines(int* index) const {
+  const int selected = pathList_->selectedPath();
+  const auto& paths = workbench().document.project().paths;
+  if (index) *index = selected;
+  if (selected < 0 || selected >= static_cast<int>(paths.size())) return nullptr;
+  const auto found = rawLines_.find(paths[selected].name);
+  if (found == rawLines_.end() || found->second.size() != paths[selected].passStarts.size())
+    return nullptr;
+  return &found->second;
+}
+
+void StreamlinesPanel::updatePreview() {
+  const int k = window_->value();
+  windowLabel_->setText(tr("k = %1").arg(k));
+  PartScene& scene = workbench().partView.scene();
+  int index = -1;
+  const auto* raw = selectedRawLines(&index);
+  const auto& paths = workbench().document.project().paths;
+  if (k == 0 || index < 0 || index >= static_cast<int>(paths.size())) {
+    if (scene.removeOverlay(kPreviewOverlay)) workbench().partView.view().requestRender();
+    return;
+  }
+  // The raw lines: as traced if this panel made the path, else the path's contacts.
+  std::vector<std::vector<Eigen::Vector3d>> lines;
+  if (raw) {
+    for (const auto& line : *raw) lines.push_back(line.polyline());
+  } else {
+    const planning::ToolPath& path = paths[index];
+    for (std::size_t s = 0; s < path.passStarts.size(); ++s) {
+      const std::size_t end =
+          s + 1 < path.passStarts.size() ? path.passStarts[s + 1] : path.poses.size();
+      auto& line = lines.emplace_back();
+      for (std::size_t i = path.passStarts[s]; i < end; ++i) line.push_back(path.poses[i].contact);
+    }
+  }
+  for (auto& line : lines) line = planning::smoothMovingAverage(line, k);
+  OverlayStyle style;
+  style.rgb = {0.2, 0.95, 1.0};
+  style.lineWidth = 3.0;
+  style.onTop = true;
+  scene.setOverlay(kPreviewOverlay, toPolylinePolyData(lines), style);
+  workbench().partView.view().requestRender();
+}
+
+void StreamlinesPanel::replaceSelected(std::vector<planning::Streamline> lines,
+                                       const QString& what) {
+  runUserAction(workbench().reportError, what, [&] {
+    Document& document = workbench().document;
+    const planning::Project& p = document.project();
+    const int index = pathList_->selectedPath();
+    if (index < 0 || index >= static_cast<int>(p.paths.size()))
+      throw InvalidInput("no path is selected");
+    const planning::ToolPath& old = p.paths[index];
+    planning::StreamlinePathParams params;
+    params.name = old.name;
+    params.feedMmPerMin = old.feedMmPerMin;
+    planning::ToolPath path =
+        planning::toolPathFromStreamlines(*p.part, lines, p.tools.at(old.tool), old.tool, params);
+    const QString text = QString("%1 '%2'").arg(what, QString::fromStdString(old.name));
+    document.push(std::make_unique<ReplacePathCommand>(document, index, std::move(path), text));
+  });
+}
+
+bool StreamlinesPanel::applySmoothing() {
+  const auto* raw = selectedRawLines(nullptr);
+  const int k = window_->value();
+  if (!raw || k == 0) {
+    workbench().reportError(tr("Smooth path"), raw ? tr("Set the smoothing window first.")
+                                                   : tr("Select a path traced in this panel."));
+    return false;
+  }
+  const std::size_t before = workbench().document.project().paths.size();
+  const auto revision = workbench().document.revision();
+  replaceSelected(smoothStreamlines(*workbench().document.project().part, *raw, k),
+                  tr("Smooth path"));
+  return workbench().document.revision() != revision &&
+         workbench().document.project().paths.size() == before;
+}
+
+bool StreamlinesPanel::fairSelected(double deviationMm) {
+  const auto* raw = selectedRawLines(nullptr);
+  const auto& part = workbench().document.project().part;
+  if (!raw || !part) {
+    workbench().reportError(tr("Fair path"), tr("Select a path traced in this panel."));
+    return false;
+  }
+  auto lines = std::make_shared<std::vector<planning::Streamline>>(*raw);
+  auto copy = std::make_shared<ddf::DisplacementField>(*part);
+  QPointer<StreamlinesPanel> self(this);
+  const std::uint64_t generation = generation_;
+  return workbench().jobs.start(tr("Fair path"), [=](const ProgressCallback& progress) {
+    std::vector<planning::Streamline> faired;
+    for (std::size_t l = 0; l < lines->size(); ++l) {
+      planning::FairingParams params;
+      params.deviationMm = deviationMm;
+      faired.push_back(planning::fairStreamline(*copy, (*lines)[l], params));
+      reportProgress(progress, double(l + 1) / lines->size());
+    }
+    return std::function<void()>([self, faired = std::move(faired), generation]() mutable {
+      if (self && self->generation_ == generation)
+        self->replaceSelected(std::move(faired), tr("Fair path"));
+    });
+  });
+}
+
+}  // namespace ddfcam::gui
