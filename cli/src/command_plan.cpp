@@ -7,6 +7,7 @@
 #include <ddfcam/planning/curvature.h>
 #include <ddfcam/planning/flow_field.h>
 #include <ddfcam/planning/path_linking.h>
+#include <ddfcam/planning/scallop_spacing.h>
 #include <ddfcam/planning/streamline_fairing.h>
 #include <ddfcam/planning/streamline_path.h>
 
@@ -22,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace ddfcam::cli {
@@ -45,6 +47,9 @@ constexpr const char* kHelp =
     "                           with rk4, transverse with walk and continuous)\n"
     "  --spacing MM             distance between lines (default: bounding-box diagonal / 40);\n"
     "                           every line stops after 4 bounding-box diagonals\n"
+    "  --scallop MM             instead of --spacing: largest scallop height between lines; the\n"
+    "                           spacing follows the curvature across the feed (needs --tool\n"
+    "                           ball and even seeding; a straight roll needs --spacing)\n"
     "  --smooth-window K        moving average of half window K, kept on the surface (default 0)\n"
     "  --fair                   fair every line (bending energy, 0.05 mm deviation)\n"
     "  --linking zigzag|one-way order of the lines (default zigzag); links up to 2 spacings\n"
@@ -71,6 +76,7 @@ struct PlanOptions {
   planning::StreamlineMethod method = planning::StreamlineMethod::Rk4;
   Seeding seeding = Seeding::Transverse;
   std::optional<double> spacingMm;
+  std::optional<double> scallopMm;  ///< scallop height, mm: spacing from the curvature
   int smoothWindow = 0;
   bool fair = false;
   planning::LinkingOrder linking = planning::LinkingOrder::ZigZag;
@@ -141,6 +147,7 @@ void parseLines(const Arguments& args, PlanOptions& o) {
     throw UsageError("--method " + *args.value("method") +
                      " is not available with --seeding even (it traces with rk4 only)");
   o.spacingMm = args.positiveNumber("spacing");
+  o.scallopMm = args.positiveNumber("scallop");
   o.smoothWindow = args.integer("smooth-window", 0, 0, 1000);
   o.fair = args.has("fair");
   static constexpr std::array<const char*, 2> kLinkings = {"zigzag", "one-way"};
@@ -163,8 +170,23 @@ void parseOutput(const Arguments& args, PlanOptions& o) {
   o.decimals = args.integer("decimals", 6, 0, 17);
 }
 
+void checkScallop(const PlanOptions& o) {
+  if (!o.scallopMm) return;
+  if (o.spacingMm) throw UsageError("--scallop and --spacing exclude each other");
+  const std::optional<double> radius = planning::effectiveCrossFeedRadiusMm(o.tool);
+  if (!radius)
+    throw UsageError(
+        "--scallop needs --tool ball: a straight roll has a flat profile across the "
+        "feed, so no scallop height follows from the curvature; give --spacing "
+        "(at most the roll width) instead");
+  if (*o.scallopMm >= *radius)
+    throw UsageError("--scallop must be smaller than the ball radius (--radius)");
+  if (o.seeding != Seeding::Even)
+    throw UsageError("--scallop needs --seeding even (the spacing varies over the part)");
+}
+
 PlanOptions parseOptions(std::span<const std::string> words) {
-  static const std::array<OptionSpec, 15> kSpecs = {
+  static const std::array<OptionSpec, 16> kSpecs = {
       OptionSpec{"output", 'o', true},     OptionSpec{"field", '\0', true},
       OptionSpec{"direction", '\0', true}, OptionSpec{"no-smooth", '\0', false},
       OptionSpec{"method", '\0', true},    OptionSpec{"seeding", '\0', true},
@@ -172,7 +194,7 @@ PlanOptions parseOptions(std::span<const std::string> words) {
       OptionSpec{"fair", '\0', false},     OptionSpec{"linking", '\0', true},
       OptionSpec{"point", '\0', true},     OptionSpec{"tool", '\0', true},
       OptionSpec{"radius", '\0', true},    OptionSpec{"feed", '\0', true},
-      OptionSpec{"decimals", '\0', true}};
+      OptionSpec{"decimals", '\0', true},  OptionSpec{"scallop", '\0', true}};
   const Arguments args(words, kSpecs, "plan");
   args.expectPositionals(1, "an input part (.ddf, mesh or 'demo')");
   PlanOptions o;
@@ -181,6 +203,7 @@ PlanOptions parseOptions(std::span<const std::string> words) {
   parseField(args, o);
   parseLines(args, o);
   parseOutput(args, o);
+  checkScallop(o);
   return o;
 }
 
@@ -199,6 +222,36 @@ double boxDiagonal(const ddf::DisplacementField& part) {
   return box.isEmpty() ? 1.0 : box.diagonal().norm();
 }
 
+/// Distance between lines: fixed, or from the scallop height and the curvature across the feed.
+struct LineSpacing {
+  double minMm = 0, maxMm = 0;  ///< smallest and largest spacing used, mm
+  double gougingFraction = 0;   ///< share of raster points too concave for the ball (minMm there)
+  std::function<double(const ddf::SurfaceLocation&)> separationAt;  ///< empty: fixed minMm
+};
+
+LineSpacing chooseSpacing(const ddf::DisplacementField& part,
+                          const planning::CurvatureField& curvature,
+                          const planning::LineField& field, const PlanOptions& o) {
+  if (!o.scallopMm) {
+    const double fixed = o.spacingMm.value_or(boxDiagonal(part) / 40.0);
+    return {fixed, fixed, 0.0, {}};
+  }
+  std::vector<float> spacing =
+      planning::scallopSpacingField(part, curvature, field, o.tool.radiusMm, *o.scallopMm);
+  const std::optional<double> smallest = planning::smallestFiniteSpacing(spacing);
+  if (!smallest)
+    throw InvalidInput("plan: the ball of radius " + std::to_string(o.tool.radiusMm) +
+                       " mm gouges every concave point of the part; no scallop spacing exists");
+  double largest = *smallest;
+  const auto gouging = std::count_if(spacing.begin(), spacing.end(), [&](float s) {
+    if (std::isfinite(s)) largest = std::max<double>(largest, s);
+    return !std::isfinite(s);
+  });
+  const double fraction = static_cast<double>(gouging) / static_cast<double>(spacing.size());
+  return {*smallest, largest, fraction,
+          planning::spacingFunction(part, std::move(spacing), *smallest)};
+}
+
 /// Milliseconds of each stage, for the summary.
 struct StageTimes {
   double load = 0, curvature = 0, field = 0, lines = 0, paths = 0;
@@ -207,7 +260,7 @@ struct StageTimes {
 std::vector<planning::Streamline> refineLines(const ddf::DisplacementField& part,
                                               std::vector<planning::Streamline> lines,
                                               const PlanOptions& o) {
-  if (o.smoothWindow > 0) lines = smoothOnSurface(part, lines, o.smoothWindow);
+  if (o.smoothWindow > 0) lines = planning::smoothOnSurface(part, lines, o.smoothWindow);
   if (o.fair) {
     const ProgressCallback progress = consoleProgress("fairing");
     for (std::size_t l = 0; l < lines.size(); ++l) {
@@ -220,11 +273,21 @@ std::vector<planning::Streamline> refineLines(const ddf::DisplacementField& part
 }
 
 void printSummary(const PlanOptions& o, const planning::LinkedPaths& linked, std::size_t rows,
-                  double spacing, const StageTimes& t) {
+                  const LineSpacing& spacing, const StageTimes& t) {
   const double cutMin = linked.cuttingLengthMm / o.feedMmPerMin;
   const double idleMin = linked.idleLengthMm / o.feedMmPerMin;
-  std::printf("  lines: %d, spacing %.4g mm, links: %d (%d lifted)\n", linked.pathCount, spacing,
-              linked.linkCount, linked.liftedLinkCount);
+  if (o.scallopMm) {
+    std::printf("  lines: %d, scallop %.4g mm: spacing %.4g to %.4g mm, links: %d (%d lifted)\n",
+                linked.pathCount, *o.scallopMm, spacing.minMm, spacing.maxMm, linked.linkCount,
+                linked.liftedLinkCount);
+    if (spacing.gougingFraction > 0.0)
+      std::printf(
+          "  warning: %.3g %% of the part is too concave for the ball (spacing %.4g mm "
+          "there)\n",
+          100.0 * spacing.gougingFraction, spacing.minMm);
+  } else
+    std::printf("  lines: %d, spacing %.4g mm, links: %d (%d lifted)\n", linked.pathCount,
+                spacing.minMm, linked.linkCount, linked.liftedLinkCount);
   std::printf("  cutting length: %.6g mm, idle length: %.6g mm\n", linked.cuttingLengthMm,
               linked.idleLengthMm);
   std::printf(
@@ -259,12 +322,12 @@ int runPlan(std::span<const std::string> words) {
   t.field = msSince(start);
   start = Clock::now();
   const double diagonal = boxDiagonal(part);
-  const double spacing = o.spacingMm.value_or(diagonal / 40.0);
+  const LineSpacing spacing = chooseSpacing(part, curvature, field, o);
   // A longer line winds round and round a closed part (no loop closes exactly on a free form).
   std::vector<planning::Streamline> lines =
       refineLines(part,
-                  planLines(part, field, o.seeding, o.method, spacing, 4.0 * diagonal,
-                            consoleProgress("lines")),
+                  planLines(part, field, o.seeding, o.method, spacing.minMm, 4.0 * diagonal,
+                            consoleProgress("lines"), spacing.separationAt),
                   o);
   endProgressLine();
   t.lines = msSince(start);
@@ -276,7 +339,10 @@ int runPlan(std::span<const std::string> words) {
       planning::toolPathFromStreamlines(part, lines, o.tool, 0, pathParams);
   planning::LinkingParams linking;
   linking.order = o.linking;
-  linking.directLinkMaxMm = 2.0 * spacing;
+  // Concave areas barely wider than a ball allow huge spacings; links that long lift instead.
+  const double linkSpacing =
+      o.scallopMm ? std::min(spacing.maxMm, 2.0 * o.tool.radiusMm) : spacing.maxMm;
+  linking.directLinkMaxMm = 2.0 * linkSpacing;
   linking.clearanceMm = std::min(1.0, diagonal / 20.0);  // parts in metres are tiny in mm
   const planning::LinkedPaths linked = planning::linkStreamlines(part, lines, linking);
   const io::ToolPathCsv table = io::linkedToolPathCsvRows(linked, path, o.point);

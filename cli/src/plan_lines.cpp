@@ -37,16 +37,20 @@ ddf::SurfaceLocation centralSeed(const ddf::DisplacementField& part,
   return seed;
 }
 
-std::vector<planning::Streamline> planLines(const ddf::DisplacementField& part,
-                                            const planning::LineField& field, Seeding seeding,
-                                            planning::StreamlineMethod method, double spacingMm,
-                                            double maxLengthMm, const ProgressCallback& progress) {
+std::vector<planning::Streamline> planLines(
+    const ddf::DisplacementField& part, const planning::LineField& field, Seeding seeding,
+    planning::StreamlineMethod method, double spacingMm, double maxLengthMm,
+    const ProgressCallback& progress,
+    const std::function<double(const ddf::SurfaceLocation&)>& separationAt) {
   planning::StreamlineParams trace;
   trace.maxLengthMm = maxLengthMm;
   std::vector<planning::Streamline> lines;
+  if (separationAt && seeding != Seeding::Even)
+    throw InvalidInput("plan: a spacing that varies over the part needs even seeding");
   if (seeding == Seeding::Even) {
     planning::EvenSpacingParams params;
     params.separationMm = spacingMm;
+    params.separationAt = separationAt;
     params.trace = trace;
     params.progress = progress;
     lines = planning::evenlySpacedStreamlines(part, field, params);
@@ -80,33 +84,6 @@ std::vector<planning::Streamline> planLines(const ddf::DisplacementField& part,
   }
   std::erase_if(lines, [](const planning::Streamline& l) { return l.points.size() < 2; });
   return lines;
-}
-
-std::vector<planning::Streamline> smoothOnSurface(const ddf::DisplacementField& part,
-                                                  const std::vector<planning::Streamline>& lines,
-                                                  int halfWindow) {
-  std::vector<planning::Streamline> out;
-  out.reserve(lines.size());
-  for (const planning::Streamline& raw : lines) {
-    planning::Streamline line = raw;
-    const std::vector<ddf::Vec3> smooth = planning::smoothMovingAverage(raw.polyline(), halfWindow);
-    const auto count = static_cast<int>(smooth.size());
-    line.lengthMm = 0.0;
-    for (int i = 0; i < count; ++i) {
-      // The filter also slides points along the line, possibly off their raw face: of the
-      // faces in the window, the one whose surface point is nearest wins.
-      double best = std::numeric_limits<double>::infinity();
-      for (int j = std::max(0, i - halfWindow); j <= std::min(count - 1, i + halfWindow); ++j) {
-        const auto at = ddf::locateOnFace(part, raw.points[j].face, smooth[i]);
-        if (!at || (at->point - smooth[i]).norm() >= best) continue;
-        best = (at->point - smooth[i]).norm();
-        line.points[i] = *at;
-      }
-      if (i > 0) line.lengthMm += (line.points[i].point - line.points[i - 1].point).norm();
-    }
-    out.push_back(std::move(line));
-  }
-  return out;
 }
 
 }  // namespace ddfcam::cli

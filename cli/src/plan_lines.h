@@ -7,6 +7,7 @@
 #include <ddfcam/planning/line_field.h>
 #include <ddfcam/planning/streamline.h>
 
+#include <functional>
 #include <vector>
 
 namespace ddfcam::cli {
@@ -26,16 +27,15 @@ ddf::SurfaceLocation centralSeed(const ddf::DisplacementField& part,
 /// @brief Lines @p spacingMm apart: seeded along the transverse line through centralSeed()
 /// and traced by @p method, or evenly spaced (RK4). Every line (the transverse one too) stops
 /// after @p maxLengthMm. Lines with fewer than 2 points are dropped.
-/// @throws InvalidInput, Cancelled from the planning functions.
-std::vector<planning::Streamline> planLines(const ddf::DisplacementField& part,
-                                            const planning::LineField& field, Seeding seeding,
-                                            planning::StreamlineMethod method, double spacingMm,
-                                            double maxLengthMm, const ProgressCallback& progress);
-
-/// @brief Moving average of half window @p halfWindow (smoothMovingAverage) with each point put
-/// back onto the surface (locateOnFace on the faces of its window, nearest wins).
-std::vector<planning::Streamline> smoothOnSurface(const ddf::DisplacementField& part,
-                                                  const std::vector<planning::Streamline>& lines,
-                                                  int halfWindow);
+/// @param separationAt for Seeding::Even only: spacing that varies over the surface, mm
+/// (EvenSpacingParams::separationAt; @p spacingMm should then be its smallest value); empty:
+/// @p spacingMm everywhere.
+/// @throws InvalidInput, Cancelled from the planning functions; InvalidInput if
+/// @p separationAt is set with Seeding::Transverse.
+std::vector<planning::Streamline> planLines(
+    const ddf::DisplacementField& part, const planning::LineField& field, Seeding seeding,
+    planning::StreamlineMethod method, double spacingMm, double maxLengthMm,
+    const ProgressCallback& progress,
+    const std::function<double(const ddf::SurfaceLocation&)>& separationAt = {});
 
 }  // namespace ddfcam::cli

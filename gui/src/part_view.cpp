@@ -149,7 +149,12 @@ void PartView::applyFieldDisplay() {
     return;
   }
   if (display_.autoRange) {
-    if (const auto range = planning::fieldRange(field->values)) {
+    // Signed fields (curvature, deviation) may carry a few spikes that would wash out the
+    // colours; unsigned ones (height, removal) are often zero over most of the part, where
+    // quantiles would hide the largest values that matter.
+    const auto range = field->isSigned ? planning::robustFieldRange(field->values)
+                                       : planning::fieldRange(field->values);
+    if (range) {
       const ValueRange fit = defaultRange(range->min, range->max, field->isSigned);
       display_.lo = fit.lo;
       display_.hi = fit.hi;

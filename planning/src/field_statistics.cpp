@@ -27,6 +27,32 @@ std::optional<FieldRange> fieldRange(std::span<const float> values) {
   return range;
 }
 
+std::optional<FieldRange> robustFieldRange(std::span<const float> values,
+                                           const RobustRangeParams& params) {
+  if (!(params.lowerFraction >= 0.0 && params.lowerFraction < 0.5 && params.upperFraction >= 0.0 &&
+        params.upperFraction < 0.5 && params.outlierSpanRatio >= 1.0)) {
+    throw InvalidInput("robustFieldRange: fractions must lie in [0, 0.5) and the ratio be >= 1");
+  }
+  std::optional<FieldRange> full = fieldRange(values);
+  if (!full) return full;
+  std::vector<float> finite;
+  finite.reserve(full->finiteCount);
+  for (const float x : values)
+    if (std::isfinite(x)) finite.push_back(x);
+  const auto last = static_cast<double>(finite.size() - 1);
+  auto quantile = [&](double q) {
+    const auto at = finite.begin() + static_cast<std::ptrdiff_t>(std::floor(q * last));
+    std::nth_element(finite.begin(), at, finite.end());
+    return static_cast<double>(*at);
+  };
+  const double lo = quantile(params.lowerFraction);
+  const double hi = quantile(1.0 - params.upperFraction);
+  // A degenerate quantile range (most values equal) says nothing about outliers.
+  if (hi > lo && full->max - full->min > params.outlierSpanRatio * (hi - lo))
+    full->min = lo, full->max = hi;
+  return full;
+}
+
 Histogram histogram(std::span<const float> values, int bins, double lo, double hi) {
   if (bins < 1 || !std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi) ||
       !std::isfinite(hi - lo)) {

@@ -99,17 +99,9 @@ FieldAdjacency adjacencyOf(const FieldProblem& problem) {
   return a;
 }
 
-// Edges between two aggregates merge into one with the mean weight: a piecewise-constant
-// field on the coarse graph then has about the fine field's Dirichlet energy (2D scale
-// invariance), where the Galerkin sum would overweight smoothness by the aggregate diameter
-// and slow the cycles down. Data weights add up exactly.
-FieldLevel buildLevel(const FieldProblem& problem, int radius) {
-  FieldLevel level;
-  const std::uint32_t count = aggregate(problem, adjacencyOf(problem), radius, level);
-  level.coarse.target.assign(count, 0.0);
-  level.coarse.weight2.assign(count, 0.0);
-  for (std::size_t p = 0; p < level.group.size(); ++p)
-    level.coarse.weight2[level.group[p]] += problem.weight2[p];
+// The fine edges between two different aggregates of @p level, sorted by aggregate pair (the
+// lower aggregate first; phases rewritten from its side).
+std::vector<Crossing> crossingsOf(const FieldProblem& problem, const FieldLevel& level) {
   std::vector<Crossing> crossings;
   for (std::uint32_t i = 0; i < problem.edges.size(); ++i) {
     const FieldEdge& e = problem.edges[i];
@@ -122,6 +114,21 @@ FieldLevel buildLevel(const FieldProblem& problem, int radius) {
   }
   std::sort(crossings.begin(), crossings.end(),
             [](const Crossing& x, const Crossing& y) { return x.key < y.key; });
+  return crossings;
+}
+
+// Edges between two aggregates merge into one with the mean weight: a piecewise-constant
+// field on the coarse graph then has about the fine field's Dirichlet energy (2D scale
+// invariance), where the Galerkin sum would overweight smoothness by the aggregate diameter
+// and slow the cycles down. Data weights add up exactly.
+FieldLevel buildLevel(const FieldProblem& problem, int radius) {
+  FieldLevel level;
+  const std::uint32_t count = aggregate(problem, adjacencyOf(problem), radius, level);
+  level.coarse.target.assign(count, 0.0);
+  level.coarse.weight2.assign(count, 0.0);
+  for (std::size_t p = 0; p < level.group.size(); ++p)
+    level.coarse.weight2[level.group[p]] += problem.weight2[p];
+  const std::vector<Crossing> crossings = crossingsOf(problem, level);
   level.link.assign(problem.edges.size(), kNone);
   level.factor.assign(problem.edges.size(), 0.0);
   for (std::size_t i = 0; i < crossings.size();) {

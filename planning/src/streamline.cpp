@@ -87,10 +87,10 @@ HalfLine Tracer::traceHalf(const SurfaceLocation& seed, const Vec3& dir0, double
   Vec3 ref = dir0;
   int idle = 0;
   for (;;) {
-    const double s = std::min(step_, lengthBudget - half.lengthMm);
-    if (half.steps >= stepBudget || !(s > kNoProgress * step_)) return half;  // MaxLength
-    if (params_.progress && half.steps % 256 == 0)
-      reportProgress(params_.progress, std::min(1.0, half.lengthMm / params_.maxLengthMm));
+    const std::optional<double> length =
+        nextStepLength(half, step_, lengthBudget, stepBudget, params_);
+    if (!length) return half;  // MaxLength
+    const double s = *length;
     const auto step = rk4(cur.face, cur.bary, ref, s);
     if (!step) {
       half.stop = StopReason::Singularity;
@@ -112,17 +112,8 @@ HalfLine Tracer::traceHalf(const SurfaceLocation& seed, const Vec3& dir0, double
       continue;
     }
     idle = 0;
-    half.lengthMm += moved;
-    half.points.push_back(next);
+    if (appendPoint(half, next, moved, edgeStop, rules_, seed)) return half;
     cur = next;
-    if (edgeStop) {
-      half.stop = *edgeStop;
-      return half;
-    }
-    if (const auto stop = rules_.at(half, seed)) {
-      half.stop = *stop;
-      return half;
-    }
   }
 }
 
@@ -130,17 +121,10 @@ HalfLine Tracer::traceHalf(const SurfaceLocation& seed, const Vec3& dir0, double
 
 Streamline traceStreamline(const ddf::DisplacementField& ddf, const LineField& field,
                            const ddf::SurfaceLocation& seed, const StreamlineParams& params) {
-  checkTraceInput(ddf, field, seed, params, "traceStreamline");
-  const double stepMm = params.stepMm > 0.0 ? params.stepMm : meanRasterSpacing(ddf);
-  const FieldSampler sampler(ddf, field, params.minCoherence);
-  const StopRules rules(params, stepMm);
-  Streamline early;
-  const auto start = prepareTrace(sampler, rules, seed, early);
-  if (!start) return early;
-  const Tracer tracer(sampler, rules, params, stepMm);
-  return traceBothWays(*start, params, [&](const Vec3& dir, double length, int steps) {
-    return tracer.traceHalf(start->start, dir, length, steps);
-  });
+  return traceWith(ddf, field, seed, params, "traceStreamline",
+                   [&](const FieldSampler& sampler, const StopRules& rules, double stepMm) {
+                     return Tracer(sampler, rules, params, stepMm);
+                   });
 }
 
 Streamline traceStreamlineWith(StreamlineMethod method, const ddf::DisplacementField& ddf,

@@ -60,6 +60,12 @@ SurfaceJacobian surfaceJacobian(const ddf::DisplacementField& ddf, int face, con
   return jacobianFrom(ddf, face, mu, h, ha, hc);
 }
 
+double cellHeight(const ddf::DisplacementField& ddf, const RasterCell& cell) {
+  double h = 0.0;
+  for (int i = 0; i < 3; ++i) h += cell.weight[i] * ddf.allHeights()[cell.index[i]];
+  return h;
+}
+
 RasterCell rasterCell(const ddf::DisplacementField& ddf, int face, const Vec3& mu) {
   const ddf::Raster& raster = ddf.raster();
   const int n = raster.steps();
@@ -294,6 +300,31 @@ std::optional<SurfaceLocation> relocate(const FieldSampler& sampler, const StopR
     face = next;
   }
   return sampler.locate(face, clampBary(mu));
+}
+
+std::optional<double> nextStepLength(const HalfLine& half, double stepMm, double lengthBudget,
+                                     int stepBudget, const StreamlineParams& params) {
+  const double s = std::min(stepMm, lengthBudget - half.lengthMm);
+  if (half.steps >= stepBudget || !(s > kNoProgress * stepMm)) return std::nullopt;
+  if (params.progress && half.steps % 256 == 0)
+    reportProgress(params.progress, std::min(1.0, half.lengthMm / params.maxLengthMm));
+  return s;
+}
+
+bool appendPoint(HalfLine& half, const SurfaceLocation& next, double moved,
+                 const std::optional<StopReason>& edgeStop, const StopRules& rules,
+                 const SurfaceLocation& seed) {
+  half.lengthMm += moved;
+  half.points.push_back(next);
+  if (edgeStop) {
+    half.stop = *edgeStop;
+    return true;
+  }
+  if (const auto stop = rules.at(half, seed)) {
+    half.stop = *stop;
+    return true;
+  }
+  return false;
 }
 
 double polylineLength(const std::vector<SurfaceLocation>& points) {

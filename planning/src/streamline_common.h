@@ -95,6 +95,9 @@ struct SurfaceJacobian {
 SurfaceJacobian surfaceJacobian(const ddf::DisplacementField& ddf, int face, const Vec3& mu,
                                 const RasterCell& cell);
 
+/// The height h interpolated linearly over @p cell (as ddf::interpolateOnFace does).
+double cellHeight(const ddf::DisplacementField& ddf, const RasterCell& cell);
+
 /// Interpolation of a sign-free line field and of the surface over the raster triangles.
 class FieldSampler {
  public:
@@ -155,6 +158,18 @@ struct TraceStart {
 std::optional<TraceStart> prepareTrace(const FieldSampler& sampler, const StopRules& rules,
                                        const SurfaceLocation& seed, Streamline& early);
 
+/// The length of the next step of @p half, mm: @p stepMm cut to the length budget; nullopt when
+/// the length or step budget is used up (a MaxLength stop). Reports progress every 256 steps.
+/// @throws Cancelled if params.progress asks to stop.
+std::optional<double> nextStepLength(const HalfLine& half, double stepMm, double lengthBudget,
+                                     int stepBudget, const StreamlineParams& params);
+
+/// Appends @p next, @p moved mm on, to @p half, then applies @p edgeStop (a stop met on the
+/// way to next) and the loop and proximity rules; true when @p half stopped there.
+bool appendPoint(HalfLine& half, const SurfaceLocation& next, double moved,
+                 const std::optional<StopReason>& edgeStop, const StopRules& rules,
+                 const SurfaceLocation& seed);
+
 /// Traces forward with @p dir0, then (unless the loop closed) backward with the remaining
 /// length and step budgets, and joins both halves around @p start.
 template <class TraceHalf>
@@ -176,6 +191,38 @@ Streamline traceBothWays(const TraceStart& s, const StreamlineParams& params,
   line.points.insert(line.points.end(), forward.points.begin(), forward.points.end());
   line.lengthMm = forward.lengthMm + backward.lengthMm;
   return line;
+}
+
+/// The driver every tracer shares: checks the input (@p who names the caller), builds the
+/// field sampler and stop rules, prepares the seed and traces both halves with the stepper
+/// makeStepper(sampler, rules, stepMm) returns (its traceHalf(start, dir, length, steps) gives a
+/// HalfLine); finish(sampler, rules, line) may then post-process the joined line.
+template <class MakeStepper, class Finish>
+Streamline traceWith(const ddf::DisplacementField& ddf, const LineField& field,
+                     const SurfaceLocation& seed, const StreamlineParams& params, const char* who,
+                     MakeStepper&& makeStepper, Finish&& finish) {
+  checkTraceInput(ddf, field, seed, params, who);
+  const double stepMm = params.stepMm > 0.0 ? params.stepMm : meanRasterSpacing(ddf);
+  const FieldSampler sampler(ddf, field, params.minCoherence);
+  const StopRules rules(params, stepMm);
+  Streamline early;
+  const auto start = prepareTrace(sampler, rules, seed, early);
+  if (!start) return early;
+  const auto stepper = makeStepper(sampler, rules, stepMm);
+  Streamline line = traceBothWays(*start, params, [&](const Vec3& dir, double length, int steps) {
+    return stepper.traceHalf(start->start, dir, length, steps);
+  });
+  finish(sampler, rules, line);
+  return line;
+}
+
+/// traceWith without post-processing.
+template <class MakeStepper>
+Streamline traceWith(const ddf::DisplacementField& ddf, const LineField& field,
+                     const SurfaceLocation& seed, const StreamlineParams& params, const char* who,
+                     MakeStepper&& makeStepper) {
+  return traceWith(ddf, field, seed, params, who, std::forward<MakeStepper>(makeStepper),
+                   [](const FieldSampler&, const StopRules&, Streamline&) {});
 }
 
 /// The surface location nearest @p x found by V-projecting it onto @p face and, while the foot

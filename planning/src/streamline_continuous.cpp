@@ -184,10 +184,10 @@ HalfLine Stepper::traceHalf(const SurfaceLocation& seed, const Vec3& dir0, doubl
   Vec3 ref = dir0;
   int idle = 0;
   for (;;) {
-    const double s = std::min(step_, lengthBudget - half.lengthMm);
-    if (half.steps >= stepBudget || !(s > kNoProgress * step_)) return half;  // MaxLength
-    if (params_.progress && half.steps % 256 == 0)
-      reportProgress(params_.progress, std::min(1.0, half.lengthMm / params_.maxLengthMm));
+    const std::optional<double> length =
+        nextStepLength(half, step_, lengthBudget, stepBudget, params_);
+    if (!length) return half;  // MaxLength
+    const double s = *length;
     const auto k1 = sampler_.sample(cur.face, cur.bary, ref);
     if (!k1) {
       half.stop = StopReason::Singularity;
@@ -211,17 +211,8 @@ HalfLine Stepper::traceHalf(const SurfaceLocation& seed, const Vec3& dir0, doubl
     }
     idle = 0;
     ref = dir;
-    half.lengthMm += moved;
-    half.points.push_back(*end.point);
+    if (appendPoint(half, *end.point, moved, end.stop, rules_, seed)) return half;
     cur = *end.point;
-    if (end.stop) {
-      half.stop = *end.stop;
-      return half;
-    }
-    if (const auto stop = rules_.at(half, seed)) {
-      half.stop = *stop;
-      return half;
-    }
   }
 }
 
@@ -231,21 +222,14 @@ Streamline traceStreamlineContinuous(const ddf::DisplacementField& ddf, const Li
                                      const ddf::SurfaceLocation& seed,
                                      const StreamlineParams& params,
                                      const ContinuousStreamlineParams& continuous) {
-  checkTraceInput(ddf, field, seed, params, "traceStreamlineContinuous");
-  const double stepMm = params.stepMm > 0.0 ? params.stepMm : meanRasterSpacing(ddf);
-  const FieldSampler sampler(ddf, field, params.minCoherence);
-  const StopRules rules(params, stepMm);
-  Streamline early;
-  const auto start = prepareTrace(sampler, rules, seed, early);
-  if (!start) return early;
-  std::optional<ddf::CrustHash> ownHash;
-  if (!continuous.crustHash) ownHash.emplace(ddf);
-  const Stepper stepper(sampler, rules, params,
-                        continuous.crustHash ? *continuous.crustHash : *ownHash,
-                        continuous.integrator, stepMm);
-  return traceBothWays(*start, params, [&](const Vec3& dir, double length, int steps) {
-    return stepper.traceHalf(start->start, dir, length, steps);
-  });
+  std::optional<ddf::CrustHash> ownHash;  // built only once the input passed the checks
+  return traceWith(ddf, field, seed, params, "traceStreamlineContinuous",
+                   [&](const FieldSampler& sampler, const StopRules& rules, double stepMm) {
+                     if (!continuous.crustHash) ownHash.emplace(ddf);
+                     return Stepper(sampler, rules, params,
+                                    continuous.crustHash ? *continuous.crustHash : *ownHash,
+                                    continuous.integrator, stepMm);
+                   });
 }
 
 }  // namespace ddfcam::planning

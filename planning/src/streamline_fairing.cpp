@@ -3,6 +3,9 @@
 #include <ddfcam/error.h>
 #include <ddfcam/planning/streamline_fairing.h>
 
+#include "streamline_common.h"
+#include "streamline_surface_chart.h"
+
 #include <ceres/ceres.h>
 
 #include <Eigen/Dense>
@@ -20,137 +23,14 @@ namespace {
 using ddf::SurfaceLocation;
 using ddf::Vec3;
 using Tangent = Eigen::Matrix<double, 3, 2>;
+using detail::clampBary;
+using detail::polylineLength;
+using detail::SurfaceChart;
 
-// Closest-point search: Gauss-Newton steps (several are spent on seam crossings).
-constexpr int kMaxSearchSteps = 16;
 // Bisection steps of the final pull-back towards the raw point.
 constexpr int kPullBackSteps = 30;
 // Raw segments on each side of a point's index searched for its distance to the raw line.
 constexpr int kSegmentWindow = 3;
-
-Vec3 clampBary(const Vec3& bary) {
-  const Vec3 c = bary.cwiseMax(0.0);
-  const double sum = c.sum();
-  return sum > 0.0 ? Vec3(c / sum) : Vec3(Vec3::Constant(1.0 / 3.0));
-}
-
-// The DDF surface as a piecewise quadratic map of barycentric coordinates: the height is
-// linear over each raster triangle (as in interpolateOnFace), g and v are linear over the face.
-class SurfaceChart {
- public:
-  explicit SurfaceChart(const ddf::DisplacementField& ddf) : ddf_(ddf) {}
-
-  struct Local {
-    double h = 0.0;
-    Vec3 ja = Vec3::Zero();  // dS / d(mu1 - mu2 direction a = e1 - e2)
-    Vec3 jc = Vec3::Zero();  // dS / d(c = e3 - e2)
-  };
-
-  Local local(int face, const Vec3& mu) const {
-    const ddf::Raster& raster = ddf_.raster();
-    const int n = raster.steps();
-    const double a = snap(mu[0] * n), c = snap(mu[2] * n);
-    int a0 = std::min(static_cast<int>(std::floor(a)), n - 1);
-    int c0 = std::min(static_cast<int>(std::floor(c)), n - 1);
-    if (a0 + c0 > n - 1) --c0;
-    a0 = std::max(a0, 0), c0 = std::max(c0, 0);
-    const double fa = a - a0, fc = c - c0;
-    const auto hs = ddf_.heights(face);
-    const auto at = [&](int i, int k) { return static_cast<double>(hs[raster.index(i, k)]); };
-    Local out;
-    double ha = 0.0, hc = 0.0;
-    if (fa + fc <= 1.0 || a0 + c0 == n - 1) {
-      const double h0 = at(a0, c0), h1 = at(a0 + 1, c0), h2 = at(a0, c0 + 1);
-      out.h = (1.0 - fa - fc) * h0 + fa * h1 + fc * h2;
-      ha = (h1 - h0) * n, hc = (h2 - h0) * n;
-    } else {
-      const double h0 = at(a0 + 1, c0 + 1), h1 = at(a0, c0 + 1), h2 = at(a0 + 1, c0);
-      out.h = (fa + fc - 1.0) * h0 + (1.0 - fa) * h1 + (1.0 - fc) * h2;
-      ha = (h0 - h1) * n, hc = (h0 - h2) * n;
-    }
-    const auto& fv = ddf_.faceVertices(face);
-    const Vec3 v = ddf_.vectorAt(face, mu);
-    out.ja = ddf_.position(fv[0]) - ddf_.position(fv[1]) +
-             out.h * (ddf_.vector(fv[0]) - ddf_.vector(fv[1])) + ha * v;
-    out.jc = ddf_.position(fv[2]) - ddf_.position(fv[1]) +
-             out.h * (ddf_.vector(fv[2]) - ddf_.vector(fv[1])) + hc * v;
-    return out;
-  }
-
-  SurfaceLocation locate(int face, const Vec3& bary) const {
-    const double h = local(face, bary).h;
-    return {face, bary, h, ddf_.pointAt(face, bary, h)};
-  }
-
-  Vec3 normal(const SurfaceLocation& at) const {
-    const Local l = local(at.face, at.bary);
-    return l.ja.cross(l.jc).normalized();
-  }
-
-  /// The surface point nearest to @p target found from @p start; @p normal gets its unit normal.
-  SurfaceLocation closestNear(const SurfaceLocation& start, const Vec3& target,
-                              Vec3* normal = nullptr) const;
-
- private:
-  static double snap(double x) {
-    const double r = std::round(x);
-    return std::abs(x - r) < 1e-9 ? r : x;
-  }
-  // The step from @p at by @p delta cut where it leaves the face and carried over to the
-  // neighbour across that edge; on an open edge the whole step is clamped into the face.
-  SurfaceLocation stepAcross(const SurfaceLocation& at, const Vec3& delta) const;
-
-  const ddf::DisplacementField& ddf_;
-};
-
-SurfaceLocation SurfaceChart::stepAcross(const SurfaceLocation& at, const Vec3& delta) const {
-  const Vec3 end = at.bary + delta;
-  int exit = -1;
-  double t = 1.0;
-  for (int c = 0; c < 3; ++c) {
-    if (end[c] >= -1e-14) continue;
-    const double tc = at.bary[c] <= 0.0 ? 0.0 : at.bary[c] / (at.bary[c] - end[c]);
-    if (exit < 0 || tc < t) exit = c, t = tc;
-  }
-  if (exit < 0) return locate(at.face, end);
-  const ddf::RasterTopology& topo = ddf_.topology();
-  const auto& sides = topo.edgeFaces(topo.faceEdge(at.face, (exit + 1) % 3));
-  const int next = sides[0] == at.face ? sides[1] : sides[0];
-  if (next < 0) return locate(at.face, clampBary(end));
-  Vec3 cross = at.bary + t * delta;
-  cross[exit] = 0.0;
-  cross = clampBary(cross);
-  const auto& from = ddf_.faceVertices(at.face);
-  const auto& to = ddf_.faceVertices(next);
-  Vec3 mapped = Vec3::Zero();
-  for (int c = 0; c < 3; ++c) {
-    if (c == exit) continue;
-    const auto it = std::find(to.begin(), to.end(), from[c]);
-    mapped[it - to.begin()] = cross[c];
-  }
-  return locate(next, mapped);
-}
-
-// Gauss-Newton on |S(mu) - target|^2 from @p start; the surface is smooth inside a raster
-// triangle, so a few steps reach the foot of a target a fraction of a spacing away.
-SurfaceLocation SurfaceChart::closestNear(const SurfaceLocation& start, const Vec3& target,
-                                          Vec3* normal) const {
-  SurfaceLocation cur = start;
-  const double tolerance = 1e-12 * (1.0 + target.cwiseAbs().maxCoeff());
-  for (int step = 0;; ++step) {
-    const Local l = local(cur.face, cur.bary);
-    const Vec3 r = target - cur.point;
-    Eigen::Matrix2d gram;
-    gram << l.ja.dot(l.ja), l.ja.dot(l.jc), l.jc.dot(l.ja), l.jc.dot(l.jc);
-    const Eigen::Vector2d x = gram.ldlt().solve(Eigen::Vector2d(l.ja.dot(r), l.jc.dot(r)));
-    if (step == kMaxSearchSteps || !x.allFinite() ||
-        (x[0] * l.ja + x[1] * l.jc).norm() < tolerance) {
-      if (normal) *normal = l.ja.cross(l.jc).normalized();
-      return cur;
-    }
-    cur = stepAcross(cur, Vec3(x[0], -x[0] - x[1], x[1]));
-  }
-}
 
 // The line's unknowns and cached geometry; the cache is refreshed once per Ceres evaluation
 // point by the evaluation callback, so each cost function reads three cached points.
@@ -384,13 +264,6 @@ std::vector<SurfaceLocation> finalPoints(const SurfaceChart& chart, const Fairin
     out[i] = s.place(chart, i, lo);
   }
   return out;
-}
-
-double polylineLength(const std::vector<SurfaceLocation>& points) {
-  double length = 0.0;
-  for (std::size_t i = 1; i < points.size(); ++i)
-    length += (points[i].point - points[i - 1].point).norm();
-  return length;
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -132,6 +133,38 @@ std::vector<ddf::Vec3> smoothMovingAverage(const std::vector<ddf::Vec3>& points,
     for (int j = i - k; j <= i + k; ++j) sum += points[j];
     out[i] = sum / (2 * k + 1);
   }
+  return out;
+}
+
+Streamline smoothOnSurface(const ddf::DisplacementField& ddf, const Streamline& line,
+                           int halfWindow) {
+  Streamline out = line;
+  const std::vector<Vec3> smooth = smoothMovingAverage(line.polyline(), halfWindow);
+  const auto count = static_cast<int>(smooth.size());
+  out.lengthMm = 0.0;
+  for (int i = 0; i < count; ++i) {
+    double best = std::numeric_limits<double>::infinity();
+    int lastFace = -1;
+    for (int j = std::max(0, i - halfWindow); j <= std::min(count - 1, i + halfWindow); ++j) {
+      // Consecutive points mostly share a face: locate on each face once.
+      const int face = line.points[j].face;
+      if (face == lastFace) continue;
+      lastFace = face;
+      const auto at = ddf::locateOnFace(ddf, face, smooth[i]);
+      if (!at || (at->point - smooth[i]).norm() >= best) continue;
+      best = (at->point - smooth[i]).norm();
+      out.points[i] = *at;
+    }
+    if (i > 0) out.lengthMm += (out.points[i].point - out.points[i - 1].point).norm();
+  }
+  return out;
+}
+
+std::vector<Streamline> smoothOnSurface(const ddf::DisplacementField& ddf,
+                                        const std::vector<Streamline>& lines, int halfWindow) {
+  std::vector<Streamline> out;
+  out.reserve(lines.size());
+  for (const Streamline& line : lines) out.push_back(smoothOnSurface(ddf, line, halfWindow));
   return out;
 }
 

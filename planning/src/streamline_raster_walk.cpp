@@ -254,13 +254,8 @@ HalfLine Walker::traceHalf(const SurfaceLocation& seed, const Vec3& dir0, double
     const double moved = (next->loc.point - cur.loc.point).norm();
     if (half.lengthMm + moved > lengthBudget) return half;  // MaxLength
     ++half.steps;
-    half.lengthMm += moved;
-    half.points.push_back(next->loc);
+    if (appendPoint(half, next->loc, moved, std::nullopt, rules_, seed)) return half;
     cur = *next;
-    if (const auto end = rules_.at(half, seed)) {
-      half.stop = *end;
-      return half;
-    }
   }
 }
 
@@ -322,22 +317,17 @@ Streamline traceStreamlineRasterWalk(const ddf::DisplacementField& ddf, const Li
                        std::to_string(walk.filterHalfWindow) + " or passes " +
                        std::to_string(walk.filterPasses) + " is negative");
   }
-  const double stepMm = params.stepMm > 0.0 ? params.stepMm : meanRasterSpacing(ddf);
-  const FieldSampler sampler(ddf, field, params.minCoherence);
-  const StopRules rules(params, stepMm);
-  Streamline early;
-  const auto start = prepareTrace(sampler, rules, seed, early);
-  if (!start) return early;
-  const Walker walker(sampler, rules, params, walk, stepMm);
-  Streamline line = traceBothWays(*start, params, [&](const Vec3& dir, double length, int steps) {
-    return walker.traceHalf(start->start, dir, length, steps);
-  });
-  if (walk.filterHalfWindow > 0 && walk.filterPasses > 0) {
-    filterRange(sampler, rules, walk, line.points, 0, line.seedIndex);
-    filterRange(sampler, rules, walk, line.points, line.seedIndex, line.points.size() - 1);
-    line.lengthMm = polylineLength(line.points);
-  }
-  return line;
+  return traceWith(
+      ddf, field, seed, params, "traceStreamlineRasterWalk",
+      [&](const FieldSampler& sampler, const StopRules& rules, double stepMm) {
+        return Walker(sampler, rules, params, walk, stepMm);
+      },
+      [&](const FieldSampler& sampler, const StopRules& rules, Streamline& line) {
+        if (walk.filterHalfWindow <= 0 || walk.filterPasses <= 0) return;
+        filterRange(sampler, rules, walk, line.points, 0, line.seedIndex);
+        filterRange(sampler, rules, walk, line.points, line.seedIndex, line.points.size() - 1);
+        line.lengthMm = polylineLength(line.points);
+      });
 }
 
 }  // namespace ddfcam::planning

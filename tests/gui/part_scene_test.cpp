@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// PartScene under Xvfb: field colours on screen, scalar bar, overlays and surface picking.
+// PartScene under Xvfb: field colours on screen, the scalar bar and the demo part with a field.
 #include "frame_checks.h"
+#include "part_scene_fixture.h"
 
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/ddf/surface_sampling.h>
@@ -36,94 +37,23 @@ using ddfcam::gui::FieldStyle;
 using ddfcam::gui::Layer;
 using ddfcam::gui::PartScene;
 using ddfcam::gui::VtkView;
+using ddfcam::test::colourDistance;
 using ddfcam::test::frameStats;
+using ddfcam::test::rasterField;
 
-namespace {
-
-/// Per-raster-point values (layout of allHeights()) of f(surface point).
-std::vector<float> rasterField(const ddfcam::ddf::DisplacementField& ddf,
-                               const std::function<double(const Eigen::Vector3d&)>& f) {
-  std::vector<float> values(ddf.allHeights().size());
-  const int n = ddf.resolution() - 1;
-  for (int face = 0; face < ddf.faceCount(); ++face)
-    for (int k = 0; k <= n; ++k)
-      for (int i = 0; i + k <= n; ++i)
-        values[face * ddf.pointsPerFace() + ddf.raster().index(i, k)] =
-            static_cast<float>(f(ddf.surfacePoint(face, i, k)));
-  return values;
-}
-
-/// Largest channel difference between pixel @p pixel and colour @p rgb (0..255 scale).
-int colourDistance(QRgb pixel, const std::array<double, 3>& rgb) {
-  return std::max({std::abs(qRed(pixel) - static_cast<int>(std::lround(255 * rgb[0]))),
-                   std::abs(qGreen(pixel) - static_cast<int>(std::lround(255 * rgb[1]))),
-                   std::abs(qBlue(pixel) - static_cast<int>(std::lround(255 * rgb[2])))});
-}
-
-}  // namespace
-
-class PartSceneTest : public QObject {
+class PartSceneTest : public ddfcam::test::PartSceneTestBase {
   Q_OBJECT
 
- public:
-  static void initMain() { ddfcam::gui::setDefaultSurfaceFormat(); }
-
  private slots:
-  void initTestCase() { ddfcam::gui::VtkErrorMonitor::install(); }
-  void init();
-  void cleanup();
   void linearFieldShowsMapEndsAtPartEnds();
   void scalarBarShowsTitleAndRange();
   void fieldRejectsWrongSizesAndRanges();
   void scalarBarLayoutIsStableWithTranslucentProps();
-  void overlaysAddHideAndRemove();
-  void overlayIsDrawnOverTheSurface();
-  void pickFindsFaceAndPointOfASphere();
-  void clickThenPickFindsTheClickedFace();
-  void pickMissesBackgroundAndHiddenSurface();
   void demoPartWithFieldScreenshot();
 
  private:
-  QRgb pixelAt(const QImage& image, const Eigen::Vector3d& world) const;
-  void showPlane(std::size_t rasterTriangleBudget);
   void addDemoOverlays();
-
-  std::unique_ptr<VtkView> view_;
-  std::unique_ptr<PartScene> scene_;
-  ddfcam::ddf::GeneratedSurface part_;
-  ddfcam::gui::PartGeometry geometry_;
 };
-
-void PartSceneTest::init() {
-  ddfcam::gui::VtkErrorMonitor::reset();
-  view_ = std::make_unique<VtkView>();
-  view_->resize(400, 300);
-  scene_ = std::make_unique<PartScene>(view_->renderer());
-  view_->show();
-  QVERIFY(QTest::qWaitForWindowExposed(view_.get()));
-}
-
-void PartSceneTest::cleanup() {
-  scene_.reset();
-  view_.reset();
-}
-
-QRgb PartSceneTest::pixelAt(const QImage& image, const Eigen::Vector3d& world) const {
-  const QPointF p = view_->widgetPosition(world) * view_->devicePixelRatioF();
-  return image.pixel(static_cast<int>(p.x()), static_cast<int>(p.y()));
-}
-
-void PartSceneTest::showPlane(std::size_t rasterTriangleBudget) {
-  // 40 x 30 mm plane at z = 0.25, 600 support faces, 16 raster triangles each.
-  ddfcam::ddf::PlanePatchParams plane;
-  plane.m = 5;
-  part_ = ddfcam::ddf::planePatch(plane);
-  ddfcam::gui::DisplayParams params;
-  params.rasterTriangleBudget = rasterTriangleBudget;
-  geometry_ = ddfcam::gui::buildPartGeometry(part_.ddf, params);
-  scene_->setGeometry(geometry_.scene);
-  view_->viewFrom(ddfcam::gui::ViewDirection::PlusZ);
-}
 
 void PartSceneTest::linearFieldShowsMapEndsAtPartEnds() {
   for (std::size_t budget : {std::size_t{1'000'000}, std::size_t{100}}) {
@@ -243,142 +173,6 @@ void PartSceneTest::fieldRejectsWrongSizesAndRanges() {
   // The scene's surface polydata is the caller's, untouched: no scalars were added to it.
   scene_->setSurfaceField(std::vector<float>(count, 0.5f), FieldStyle{});
   QVERIFY(geometry_.scene.surface->GetPointData()->GetScalars() == nullptr);
-}
-
-void PartSceneTest::overlaysAddHideAndRemove() {
-  showPlane(1'000'000);
-  const std::vector<std::vector<Eigen::Vector3d>> paths = {
-      {{0, 5, 0.3}, {20, 5, 0.3}, {40, 5, 0.3}}, {{0, 25, 0.3}, {40, 25, 0.3}}};
-  scene_->setOverlay("tool path", ddfcam::gui::toPolylinePolyData(paths), {});
-  scene_->setOverlay(
-      "normals",
-      ddfcam::gui::toGlyphPolyData({{10, 10, 0.25}, {30, 10, 0.25}}, {{0, 0, 1}, {0, 0, 1}}, 5.0),
-      {});
-  ddfcam::gui::OverlayStyle toolStyle;
-  toolStyle.surface = true;
-  toolStyle.opacity = 0.6;
-  const auto tool = ddfcam::planning::makeCylinderTool({}).transformed(
-      Eigen::Isometry3d(Eigen::Translation3d(20, 15, 5.5)));
-  scene_->setOverlay("tool", ddfcam::gui::toSurfacePolyData(tool), toolStyle);
-  QCOMPARE(scene_->overlayNames(), (std::vector<std::string>{"normals", "tool", "tool path"}));
-  QCOMPARE(scene_->overlayCellCount("tool path"), 2LL);
-  QCOMPARE(scene_->overlayCellCount("normals"), 6LL);
-  QCOMPARE(scene_->overlayCellCount("tool"), static_cast<long long>(tool.triangles.size()));
-  QVERIFY(scene_->isOverlayVisible("tool"));
-  scene_->setOverlayVisible("tool", false);
-  QVERIFY(!scene_->isOverlayVisible("tool"));
-  // Replacing keeps the visibility; null data is an empty overlay.
-  scene_->setOverlay("tool", nullptr, toolStyle);
-  QVERIFY(!scene_->isOverlayVisible("tool"));
-  QCOMPARE(scene_->overlayCellCount("tool"), 0LL);
-  QVERIFY(scene_->removeOverlay("tool"));
-  QVERIFY(!scene_->removeOverlay("tool"));
-  QVERIFY(!scene_->hasOverlay("tool"));
-  QVERIFY(scene_->hasOverlay("normals"));
-  QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput, scene_->setOverlayVisible("tool", true));
-  QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput, scene_->overlayCellCount("tool"));
-  // Overlays survive new geometry; the scene's own layers are untouched by them.
-  scene_->setGeometry(geometry_.scene);
-  QCOMPARE(scene_->overlayNames().size(), std::size_t{2});
-  QCOMPARE(scene_->cellCount(Layer::Surface), static_cast<long long>(geometry_.surfaceTriangles));
-}
-
-void PartSceneTest::overlayIsDrawnOverTheSurface() {
-  showPlane(1'000'000);
-  ddfcam::gui::OverlayStyle red;
-  red.rgb = {1.0, 0.0, 0.0};
-  red.lineWidth = 5.0;
-  // Lying in the surface (z = 0.25): the coincident-topology offset must keep it on top.
-  scene_->setOverlay("line", ddfcam::gui::toPolylinePolyData({{{0, 15, 0.25}, {40, 15, 0.25}}}),
-                     red);
-  const Eigen::Vector3d onLine(13.0, 15.0, 0.25);
-  QImage image = view_->renderImage();
-  ddfcam::test::dumpFrame(image, "part_scene_overlay_line");
-  QVERIFY(colourDistance(pixelAt(image, onLine), red.rgb) <= 8);
-  scene_->setOverlayVisible("line", false);
-  image = view_->renderImage();
-  QVERIFY(colourDistance(pixelAt(image, onLine), red.rgb) > 60);
-  QCOMPARE(ddfcam::gui::VtkErrorMonitor::errorCount(), 0);
-}
-
-void PartSceneTest::pickFindsFaceAndPointOfASphere() {
-  ddfcam::ddf::SphereParams sphere;
-  sphere.subdivisions = 1;
-  sphere.m = 9;
-  part_ = ddfcam::ddf::spherePart(sphere);
-  geometry_ = ddfcam::gui::buildPartGeometry(part_.ddf, {});
-  QVERIFY(!geometry_.adaptiveSurface);
-  scene_->setGeometry(geometry_.scene);
-  view_->viewFrom(ddfcam::gui::ViewDirection::Isometric);
-  const Eigen::Vector3d towardsCamera = Eigen::Vector3d(1, -1, 1).normalized();
-  int tested = 0;
-  for (int f = 0; f < part_.ddf.faceCount(); ++f) {
-    // Interior raster point (i, j, k) = (2, 3, 3): on face f only, a vertex of the display mesh.
-    const Eigen::Vector3d q = part_.ddf.surfacePoint(f, 2, 3);
-    if (q.normalized().dot(towardsCamera) < 0.5) continue;  // hidden or grazing
-    const auto pick = scene_->pickSurface(*view_, view_->widgetPosition(q));
-    QVERIFY2(pick.has_value(), qPrintable(QString("face %1").arg(f)));
-    QCOMPARE(pick->face, f);
-    QCOMPARE(pick->face, geometry_.surfaceTriangleFace[pick->cell]);
-    QVERIFY2((pick->position - q).norm() < 1e-3,
-             qPrintable(QString("face %1: %2 mm off").arg(f).arg((pick->position - q).norm())));
-    ++tested;
-  }
-  QVERIFY2(tested >= 10, qPrintable(QString::number(tested)));
-  // A scene asked with another view's coordinates is a programming error.
-  VtkView other;
-  QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput, scene_->pickSurface(other, QPointF(10, 10)));
-}
-
-void PartSceneTest::clickThenPickFindsTheClickedFace() {
-  ddfcam::ddf::SphereParams sphere;
-  sphere.subdivisions = 1;
-  sphere.m = 9;
-  part_ = ddfcam::ddf::spherePart(sphere);
-  geometry_ = ddfcam::gui::buildPartGeometry(part_.ddf, {});
-  scene_->setGeometry(geometry_.scene);
-  view_->viewFrom(ddfcam::gui::ViewDirection::PlusY);
-  // The face whose centre looks most directly at the camera (+y).
-  int best = 0;
-  for (int f = 1; f < part_.ddf.faceCount(); ++f)
-    if (part_.ddf.surfacePoint(f, 3, 3).y() > part_.ddf.surfacePoint(best, 3, 3).y()) best = f;
-  const Eigen::Vector3d q = part_.ddf.surfacePoint(best, 3, 3);
-  QSignalSpy spy(view_.get(), &VtkView::clicked);
-  QTest::mouseClick(view_.get(), Qt::LeftButton, Qt::NoModifier,
-                    view_->widgetPosition(q).toPoint());
-  QCOMPARE(spy.count(), 1);
-  const auto pick = scene_->pickSurface(*view_, spy.at(0).at(0).toPointF());
-  QVERIFY(pick.has_value());
-  QCOMPARE(pick->face, best);
-  // Whole logical pixels: the hit is within a pixel's width (~0.1 mm here) of the target.
-  QVERIFY2((pick->position - q).norm() < 0.2,
-           qPrintable(QString::number((pick->position - q).norm())));
-}
-
-void PartSceneTest::pickMissesBackgroundAndHiddenSurface() {
-  showPlane(1'000'000);
-  QVERIFY(!scene_->pickSurface(*view_, QPointF(1, 1)).has_value());
-  const QPointF centre = view_->widgetPosition({20, 15, 0.25});
-  const auto hit = scene_->pickSurface(*view_, centre);
-  QVERIFY(hit.has_value());
-  QVERIFY((hit->position - Eigen::Vector3d(20, 15, 0.25)).norm() < 1e-3);
-  // Overlays do not block the surface.
-  scene_->setOverlay(
-      "box",
-      ddfcam::gui::toSurfacePolyData(ddfcam::planning::makeCylinderTool({}).transformed(
-          Eigen::Isometry3d(Eigen::Translation3d(20, 15, 6)))),
-      {});
-  QVERIFY(scene_->pickSurface(*view_, centre).has_value());
-  // A field replaces the surface polydata by a coloured copy: picks still find cells and faces.
-  scene_->setSurfaceField(
-      std::vector<float>(static_cast<std::size_t>(scene_->surfaceVertexCount()), 1.0f),
-      FieldStyle{});
-  const auto coloured = scene_->pickSurface(*view_, centre);
-  QVERIFY(coloured.has_value());
-  QCOMPARE(coloured->face, hit->face);
-  QCOMPARE(coloured->cell, hit->cell);
-  scene_->setVisible(Layer::Surface, false);
-  QVERIFY(!scene_->pickSurface(*view_, centre).has_value());
 }
 
 void PartSceneTest::addDemoOverlays() {

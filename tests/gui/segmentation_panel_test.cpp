@@ -2,7 +2,7 @@
 // The Segmentation panel under Xvfb: automatic segmentation of z = sin x sin y, region list
 // edits with undo/redo, a brush stroke and a lasso driven by mouse events, plan edits.
 #include "frame_checks.h"
-#include "workbench_fixture.h"
+#include "workbench_test.h"
 
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/gui/app_setup.h>
@@ -64,16 +64,12 @@ int faceNear(const ddfcam::ddf::DisplacementField& ddf, double x, double y) {
 
 }  // namespace
 
-class SegmentationPanelTest : public QObject {
+class SegmentationPanelTest : public ddfcam::test::WorkbenchTest {
   Q_OBJECT
-
- public:
-  static void initMain() { ddfcam::gui::setDefaultSurfaceFormat(); }
 
  private slots:
   void initTestCase();
   void init();
-  void cleanup() { QCOMPARE(ddfcam::gui::VtkErrorMonitor::errorCount(), 0); }
   void automaticSegmentationFindsBumpsPitsAndSaddles();
   void listEditsUndoBitIdentical();
   void brushStrokePaintsFacesUnderTheMouse();
@@ -81,20 +77,15 @@ class SegmentationPanelTest : public QObject {
   void planEditsAreUndoable();
 
  private:
-  const ddfcam::planning::Project& project() const { return f_.window->document().project(); }
   QUndoStack& undo() const { return *f_.window->document().undoStack(); }
   SegmentationPanel* panel() { return f_.window->findChild<SegmentationPanel*>(); }
   /// Loads the sin x sin y patch and segments it by curvature type.
   void segmentSinSin();
   QPointF toWidget(const Eigen::Vector3d& world);
-
-  ddfcam::test::WorkbenchFixture f_;
 };
 
 void SegmentationPanelTest::initTestCase() {
-  ddfcam::gui::VtkErrorMonitor::install();
-  QVERIFY(f_.dir.isValid());
-  QVERIFY(f_.open(false));
+  QVERIFY(openWorkbench(false));
   QVERIFY(panel() != nullptr);
 }
 

@@ -2,7 +2,7 @@
 // Workbench workflows under Xvfb: colour by a field (scalar bar and histogram against the
 // data), picking, jobs and cancel, undo/redo, project save/load and crash recovery.
 #include "frame_checks.h"
-#include "workbench_fixture.h"
+#include "workbench_test.h"
 
 #include <ddfcam/ddf/surface_sampling.h>
 #include <ddfcam/gui/app_setup.h>
@@ -37,16 +37,12 @@ using ddfcam::gui::FieldKind;
 using ddfcam::planning::Project;
 using ddfcam::planning::projectsEqual;
 
-class WorkflowTest : public QObject {
+class WorkflowTest : public ddfcam::test::WorkbenchTest {
   Q_OBJECT
-
- public:
-  static void initMain() { ddfcam::gui::setDefaultSurfaceFormat(); }
 
  private slots:
   void initTestCase();
   void init();
-  void cleanup() { QCOMPARE(ddfcam::gui::VtkErrorMonitor::errorCount(), 0); }
   void colourByFieldMatchesScalarBarAndHistogram();
   void pickReturnsKnownFaceAndBarycentrics();
   void cancelledJobLeavesDocumentUnchanged();
@@ -59,21 +55,16 @@ class WorkflowTest : public QObject {
 
  private:
   QAction* action(const char* name) { return f_.window->findChild<QAction*>(name); }
-  const Project& project() const { return f_.window->document().project(); }
   template <typename T>
   T* panel() {
     return f_.window->findChild<T*>();
   }
   /// Runs the demo path to completion through the Simulation panel.
   void simulateDemoPath();
-
-  ddfcam::test::WorkbenchFixture f_;
 };
 
 void WorkflowTest::initTestCase() {
-  ddfcam::gui::VtkErrorMonitor::install();
-  QVERIFY(f_.dir.isValid());
-  QVERIFY(f_.open());
+  QVERIFY(openWorkbench(true));
 }
 
 void WorkflowTest::init() {

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numbers>
 
@@ -158,6 +159,60 @@ TEST(CliPlan, UnavailableCombinationsAreRefused) {
   EXPECT_THAT(run.err, HasSubstr("expected three numbers"));
   run = plan(dir, {"demo", "-o", out, "--linking", "spiral"});
   EXPECT_THAT(run.err, HasSubstr("--linking spiral: expected zigzag|one-way"));
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliPlan, ScallopHeightSetsTheSpacingFromTheCrossFeedCurvature) {
+  test::ScratchDir dir;
+  ddf::CylinderParams params;
+  params.segments = 24;
+  params.rings = 6;
+  params.m = 9;
+  writeDdf(ddf::cylinderPart(params).ddf, dir / "cyl.ddf");
+  const PlanRun run =
+      plan(dir, {(dir / "cyl.ddf").string(), "-o", (dir / "p.csv").string(), "--field", "fixed",
+                 "--direction", "0,0,1", "--no-smooth", "--scallop", "0.05", "--tool", "ball",
+                 "--radius", "5", "--decimals", "9"});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("scallop 0.05 mm: spacing"));
+  // Oracle: ball R = 5 along the axis of the convex cylinder rho = 10; in the cross section the
+  // ball centres lie on the circle rho + R, the cusp at rho + h, each centre R from the cusp
+  // (law of cosines); the passes are 2 theta rho apart. ~1.154 mm (1.4107 on a plane).
+  const double r = 5.0, rho = 10.0, h = 0.05;
+  const double cosTheta =
+      ((rho + r) * (rho + r) + (rho + h) * (rho + h) - r * r) / (2.0 * (rho + r) * (rho + h));
+  const double expected = 2.0 * std::acos(cosTheta) * rho;
+  const auto cuts = cutsOf(readToolPathCsv(dir / "p.csv"));
+  // Lines along generators; an even-seeded line may be cut into pieces: one angle per generator.
+  std::vector<double> angles;
+  for (const auto& [move, rows] : cuts)
+    angles.push_back(std::atan2(rows.front().position.y(), rows.front().position.x()));
+  std::sort(angles.begin(), angles.end());
+  std::vector<double> gaps;
+  for (std::size_t i = 0; i < angles.size(); ++i) {
+    const double next = i + 1 < angles.size() ? angles[i + 1] : angles[0] + 2 * std::numbers::pi;
+    const double arc = rho * (next - angles[i]);
+    if (arc > 0.05) gaps.push_back(arc);  // pieces of the same generator
+  }
+  ASSERT_GE(gaps.size(), 40u);  // 2 pi 10 / 1.154 = 54.4
+  std::sort(gaps.begin(), gaps.end());
+  std::printf("scallop plan: %zu gaps, median %.4f mm, 90th percentile %.4f mm, oracle %.4f mm\n",
+              gaps.size(), gaps[gaps.size() / 2], gaps[gaps.size() * 9 / 10], expected);
+  EXPECT_NEAR(gaps[gaps.size() / 2], expected, 0.01 * expected);
+  EXPECT_LT(gaps[gaps.size() * 9 / 10], 1.05 * expected);  // no wide strips between lines
+}
+
+TEST(CliPlan, ScallopNeedsABall) {
+  test::ScratchDir dir;
+  const std::string out = (dir / "p.csv").string();
+  PlanRun run = plan(dir, {"demo", "-o", out, "--scallop", "0.01"});
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_THAT(run.err, HasSubstr("--scallop needs --tool ball"));
+  EXPECT_THAT(run.err, HasSubstr("--spacing"));
+  run = plan(dir, {"demo", "-o", out, "--scallop", "0.01", "--tool", "ball", "--spacing", "1"});
+  EXPECT_THAT(run.err, HasSubstr("--scallop and --spacing exclude each other"));
+  run = plan(dir, {"demo", "-o", out, "--scallop", "6", "--tool", "ball"});
+  EXPECT_THAT(run.err, HasSubstr("smaller than the ball radius"));
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 

@@ -137,3 +137,40 @@ TEST(FieldStatistics, RangeIgnoresNonFiniteValues) {
 
 }  // namespace
 }  // namespace ddfcam::planning
+
+namespace ddfcam::planning {
+namespace {
+
+TEST(FieldStatistics, RobustRangeDropsFewSpikesButKeepsBroadData) {
+  std::vector<float> values;
+  for (int i = 0; i <= 1000; ++i) values.push_back(static_cast<float>(i) / 1000.0f - 0.5f);
+  values.push_back(std::numeric_limits<float>::quiet_NaN());
+  // No outliers: the full range.
+  auto range = robustFieldRange(values);
+  ASSERT_TRUE(range);
+  EXPECT_FLOAT_EQ(range->min, -0.5f);
+  EXPECT_FLOAT_EQ(range->max, 0.5f);
+  EXPECT_EQ(range->invalidCount, 1u);
+  // Five spikes of 100 among 1,001 values: the 1 % and 99 % quantiles, found by sorting.
+  for (int i = 0; i < 5; ++i) values.push_back(100.0f);
+  std::vector<float> sorted;
+  for (const float v : values)
+    if (std::isfinite(v)) sorted.push_back(v);
+  std::sort(sorted.begin(), sorted.end());
+  const auto last = static_cast<double>(sorted.size() - 1);
+  range = robustFieldRange(values);
+  ASSERT_TRUE(range);
+  EXPECT_FLOAT_EQ(range->min, sorted[static_cast<std::size_t>(std::floor(0.01 * last))]);
+  EXPECT_FLOAT_EQ(range->max, sorted[static_cast<std::size_t>(std::floor(0.99 * last))]);
+  EXPECT_EQ(range->finiteCount, sorted.size());
+  // Mostly zeros with a small cut area: the quantiles are degenerate, the full range stays.
+  std::vector<float> removal(1000, 0.0f);
+  removal[3] = 0.2f;
+  range = robustFieldRange(removal);
+  EXPECT_FLOAT_EQ(range->max, 0.2f);
+  EXPECT_THROW(robustFieldRange(values, {.lowerFraction = 0.6}), InvalidInput);
+  EXPECT_FALSE(robustFieldRange(std::vector<float>{}));
+}
+
+}  // namespace
+}  // namespace ddfcam::planning

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Tests of the Ceres streamline fairing against noisy geodesics of an analytic cylinder and torus.
+#include "streamline_test_support.h"
+
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/ddf/surface_sampling.h>
 #include <ddfcam/error.h>
@@ -20,9 +22,13 @@ namespace {
 using ddf::GeneratedSurface;
 using ddf::SurfaceLocation;
 using ddf::Vec3;
+using streamline_test::fieldOf;
+using streamline_test::locateNear;
+using streamline_test::torus;
+using streamline_test::torusParallel;
 
 constexpr double kCylRadius = 10.0;
-constexpr double kTorusMajor = 3.0, kTorusMinor = 1.0;
+constexpr double kTorusMajor = streamline_test::kMajor, kTorusMinor = streamline_test::kMinor;
 constexpr double kNoise = 0.02;      // zig-zag amplitude, mm
 constexpr double kDeviation = 0.05;  // fairing bound, mm
 constexpr double kPi = std::numbers::pi;
@@ -30,33 +36,6 @@ constexpr double kPi = std::numbers::pi;
 const GeneratedSurface& cylinder() {
   static const GeneratedSurface part = ddf::cylinderPart({.radiusMm = kCylRadius});
   return part;
-}
-
-const GeneratedSurface& torus() {
-  static const GeneratedSurface part = ddf::torusPart({.majorRadiusMm = kTorusMajor,
-                                                       .minorRadiusMm = kTorusMinor,
-                                                       .segmentsU = 48,
-                                                       .segmentsV = 24,
-                                                       .m = 9});
-  return part;
-}
-
-// The DDF surface location nearest to @p target: locateOnFace on the faces whose centroids
-// are nearest (brute force over the centroids).
-SurfaceLocation locateNear(const ddf::DisplacementField& ddf, const Vec3& target) {
-  const Vec3 third = Vec3::Constant(1.0 / 3.0);
-  std::vector<std::pair<double, int>> order;
-  for (int f = 0; f < ddf.faceCount(); ++f)
-    order.push_back({(ddf.basePoint(f, third) - target).squaredNorm(), f});
-  std::partial_sort(order.begin(), order.begin() + 6, order.end());
-  SurfaceLocation best;
-  double bestDistance = INFINITY;
-  for (int c = 0; c < 6; ++c) {
-    const auto loc = ddf::locateOnFace(ddf, order[c].second, target);
-    if (loc && (loc->point - target).norm() < bestDistance)
-      best = *loc, bestDistance = (loc->point - target).norm();
-  }
-  return best;
 }
 
 // Largest distance to the analytic surface of the DDF surface on the faces a line uses, sampled
@@ -244,17 +223,7 @@ TEST(StreamlineFairing, NoisyTorusEquatorStaysClosedAndBecomesTheEquator) {
 
 // The exact parallel directions (-sin u, cos u, 0) of the torus at every stored raster point.
 LineField exactParallelField() {
-  const ddf::DisplacementField& ddf = torus().ddf;
-  LineField out;
-  const int n = ddf.raster().steps();
-  for (int f = 0; f < ddf.faceCount(); ++f)
-    for (int k = 0; k <= n; ++k)
-      for (int i = 0; i <= n - k; ++i) {
-        const Vec3 q = ddf.surfacePoint(f, i, k);
-        const double u = std::atan2(q.y(), q.x());
-        out.push_back({-std::sin(u), std::cos(u), 0.0});
-      }
-  return out;
+  return fieldOf(torus().ddf, torusParallel);
 }
 
 // Largest distance of the line's points from the torus parallel at tube angle v, mm.

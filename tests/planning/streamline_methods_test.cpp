@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Tests of the raster-walk and continuous streamlines against torus, ellipsoid and cylinder truth.
 #include "curvature_accuracy.h"
+#include "streamline_test_support.h"
 
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/ddf/crust_hash.h>
@@ -23,40 +24,7 @@
 namespace ddfcam::planning {
 namespace {
 
-using ddf::GeneratedSurface;
-using ddf::SurfaceLocation;
-using ddf::Vec3;
-
-constexpr double kMajor = 3.0, kMinor = 1.0;
-
-double rasterSpacing(const ddf::DisplacementField& ddf) {
-  const auto& mesh = ddf.support();
-  double sum = 0.0;
-  for (const auto& e : mesh.edges()) sum += mesh.calc_edge_length(e);
-  return sum / mesh.n_edges() / ddf.raster().steps();
-}
-
-// One analytic direction per stored raster point, laid out like ddf.allHeights().
-template <class Fn>
-LineField fieldOf(const ddf::DisplacementField& ddf, Fn&& direction) {
-  LineField out;
-  const int n = ddf.raster().steps();
-  for (int f = 0; f < ddf.faceCount(); ++f)
-    for (int k = 0; k <= n; ++k)
-      for (int i = 0; i <= n - k; ++i) out.push_back(direction(ddf.surfacePoint(f, i, k)));
-  return out;
-}
-
-// The face whose point at kSeedBary is nearest @p target, with that seed (off the raster).
-const Vec3 kSeedBary(0.31, 0.33, 0.36);
-SurfaceLocation seedNear(const ddf::DisplacementField& ddf, const Vec3& target) {
-  int best = 0;
-  for (int f = 1; f < ddf.faceCount(); ++f)
-    if ((ddf.basePoint(f, kSeedBary) - target).norm() <
-        (ddf.basePoint(best, kSeedBary) - target).norm())
-      best = f;
-  return {best, kSeedBary, 0.0, Vec3::Zero()};
-}
+using namespace streamline_test;
 
 // Both new methods with one signature; the continuous one shares a crust hash per part.
 using Tracer = Streamline (*)(const ddf::DisplacementField&, const LineField&,
@@ -80,66 +48,6 @@ struct Method {
   Tracer trace;
 };
 const Method kMethods[] = {{"raster_walk", rasterWalk}, {"continuous", continuous}};
-
-void expectOnSurface(const ddf::DisplacementField& ddf, const Streamline& line) {
-  for (const auto& p : line.points) {
-    ASSERT_GE(p.bary.minCoeff(), 0.0);
-    ASSERT_NEAR(p.bary.sum(), 1.0, 1e-12);
-    EXPECT_LT((ddf.pointAt(p.face, p.bary, p.h) - p.point).norm(), 1e-12);
-    EXPECT_NEAR(p.h, ddf::interpolateOnFace(ddf, ddf.allHeights(), p.face, p.bary), 1e-6);
-  }
-}
-
-double maxGap(const Streamline& line) {
-  double gap = 0.0;
-  for (std::size_t i = 1; i < line.points.size(); ++i)
-    gap = std::max(gap, (line.points[i].point - line.points[i - 1].point).norm());
-  return gap;
-}
-
-// ---- torus (R 3, r 1): meridians and parallels are the lines of curvature ----
-
-const GeneratedSurface& torus() {
-  static const GeneratedSurface part = ddf::torusPart(
-      {.majorRadiusMm = kMajor, .minorRadiusMm = kMinor, .segmentsU = 48, .segmentsV = 24, .m = 9});
-  return part;
-}
-
-double angleU(const Vec3& p) {
-  return std::atan2(p.y(), p.x());
-}
-
-LineField masked(const std::vector<Vec3>& dirs, const std::vector<std::uint8_t>& umbilic) {
-  LineField out = dirs;
-  for (std::size_t i = 0; i < out.size(); ++i)
-    if (umbilic[i]) out[i] = Vec3::Zero();
-  return out;
-}
-
-const CurvatureField& estimatedTorusCurvature() {
-  static const CurvatureField c = computeCurvature(torus().ddf);
-  return c;
-}
-
-double parallelDrift(const Streamline& line) {
-  const Vec3 s = line.points[line.seedIndex].point;
-  const double rho0 = std::hypot(s.x(), s.y());
-  double worst = 0.0;
-  for (const auto& p : line.points)
-    worst = std::max(worst,
-                     std::hypot(std::hypot(p.point.x(), p.point.y()) - rho0, p.point.z() - s.z()));
-  return worst;
-}
-
-double meridianDrift(const Streamline& line) {
-  const double u0 = angleU(line.points[line.seedIndex].point);
-  double worst = 0.0;
-  for (const auto& p : line.points) {
-    const double du = std::remainder(angleU(p.point) - u0, 2.0 * std::numbers::pi);
-    worst = std::max(worst, std::abs(du) * std::hypot(p.point.x(), p.point.y()));
-  }
-  return worst;
-}
 
 struct TorusCase {
   int method;
@@ -258,12 +166,6 @@ TEST(StreamlineMethods, EllipsoidMaxLineStaysOnItsConfocalQuadric) {
 
 // ---- cylinder (r 10, length 30): rulings, boundaries, regions, stops ----
 
-const GeneratedSurface& cylinder() {
-  static const GeneratedSurface part =
-      ddf::cylinderPart({.radiusMm = 10.0, .lengthMm = 30.0, .segments = 48, .rings = 12, .m = 5});
-  return part;
-}
-
 LineField axialField() {
   return LineField(cylinder().ddf.allHeights().size(), Vec3::UnitZ());
 }
@@ -290,17 +192,11 @@ TEST(StreamlineMethods, RulingRunsFromBoundaryToBoundary) {
 TEST(StreamlineMethods, StopAtARegionBoundaryAndStayInside) {
   const ddf::DisplacementField& ddf = cylinder().ddf;
   // The region: faces whose centroid lies at 5 < z < 20 mm (whole rings of 2.5 mm).
-  std::vector<std::uint8_t> mask(static_cast<std::size_t>(ddf.faceCount()), 0);
-  for (int f = 0; f < ddf.faceCount(); ++f) {
-    const double z = ddf.pointAt(f, Vec3::Constant(1.0 / 3.0), 0.0).z();
-    mask[static_cast<std::size_t>(f)] = (z > 5.0 && z < 20.0) ? 1 : 0;
-  }
+  const std::vector<std::uint8_t> mask = zBandMask(ddf, 5.0, 20.0);
   StreamlineParams params;
   params.faceMask = mask;
-  int seedFace = 0;
-  while (!mask[static_cast<std::size_t>(seedFace)]) ++seedFace;
-  int outside = 0;
-  while (mask[static_cast<std::size_t>(outside)]) ++outside;
+  const int seedFace = firstFace(mask, true);
+  const int outside = firstFace(mask, false);
   for (const Method& method : kMethods) {
     const Streamline line = method.trace(ddf, axialField(), {seedFace, kSeedBary}, params);
     EXPECT_EQ(line.stop, Streamline::RegionBoundary) << method.name;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Tests of RK4 streamlines on DDFs against torus curvature lines and cylinder rulings/circles.
+// ddfcam: RK4 streamlines on the torus and the ellipsoid against their analytic lines of curvature.
 #include "curvature_accuracy.h"
+#include "streamline_test_support.h"
 
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/ddf/surface_sampling.h>
@@ -15,36 +16,12 @@
 #include <cstdio>
 #include <numbers>
 #include <random>
+#include <string>
 
 namespace ddfcam::planning {
 namespace {
 
-using ddf::GeneratedSurface;
-using ddf::SurfaceLocation;
-using ddf::Vec3;
-
-constexpr double kMajor = 3.0, kMinor = 1.0;
-
-// Mean support edge length / (m - 1), mm.
-double rasterSpacing(const ddf::DisplacementField& ddf) {
-  const auto& mesh = ddf.support();
-  double sum = 0.0;
-  for (const auto& e : mesh.edges()) sum += mesh.calc_edge_length(e);
-  return sum / mesh.n_edges() / ddf.raster().steps();
-}
-
-const GeneratedSurface& torus() {
-  static const GeneratedSurface part = ddf::torusPart(
-      {.majorRadiusMm = kMajor, .minorRadiusMm = kMinor, .segmentsU = 48, .segmentsV = 24, .m = 9});
-  return part;
-}
-
-double angleU(const Vec3& p) {
-  return std::atan2(p.y(), p.x());
-}
-double angleV(const Vec3& p) {
-  return std::atan2(p.z(), std::hypot(p.x(), p.y()) - kMajor);
-}
+using namespace streamline_test;
 
 // The exact principal directions of the torus at every stored raster point: meridians (k_max
 // = 1/r) and parallels (k_min = cos v / (R + r cos v) < 1/r).
@@ -53,84 +30,14 @@ struct TorusFields {
 };
 
 const TorusFields& exactTorusFields() {
-  static const TorusFields fields = [] {
-    const ddf::DisplacementField& ddf = torus().ddf;
-    TorusFields out;
-    const int n = ddf.raster().steps();
-    for (int f = 0; f < ddf.faceCount(); ++f)
-      for (int k = 0; k <= n; ++k)
-        for (int i = 0; i <= n - k; ++i) {
-          const Vec3 q = ddf.surfacePoint(f, i, k);
-          const double u = angleU(q), v = angleV(q);
-          out.meridian.push_back(
-              {-std::sin(v) * std::cos(u), -std::sin(v) * std::sin(u), std::cos(v)});
-          out.parallel.push_back({-std::sin(u), std::cos(u), 0.0});
-        }
-    return out;
-  }();
+  static const TorusFields fields{fieldOf(torus().ddf, torusMeridian),
+                                  fieldOf(torus().ddf, torusParallel)};
   return fields;
-}
-
-const CurvatureField& estimatedTorusCurvature() {
-  static const CurvatureField c = computeCurvature(torus().ddf);
-  return c;
-}
-
-LineField masked(const std::vector<Vec3>& dirs, const std::vector<std::uint8_t>& umbilic) {
-  LineField out = dirs;
-  for (std::size_t i = 0; i < out.size(); ++i)
-    if (umbilic[i]) out[i] = Vec3::Zero();
-  return out;
 }
 
 // A seed inside the face whose centroid is nearest to the torus angles (u, v), off the grid.
 SurfaceLocation torusSeed(double u, double v) {
-  const ddf::DisplacementField& ddf = torus().ddf;
-  const Vec3 bary(0.31, 0.33, 0.36);
-  const Vec3 target = ddf::TorusSurface(kMajor, kMinor).point(u, v);
-  int best = 0;
-  for (int f = 1; f < ddf.faceCount(); ++f) {
-    if ((ddf.basePoint(f, bary) - target).norm() < (ddf.basePoint(best, bary) - target).norm())
-      best = f;
-  }
-  return {best, bary, 0.0, Vec3::Zero()};
-}
-
-// Largest distance of the line's points from the parallel (or meridian) through its seed, mm.
-double parallelDrift(const Streamline& line) {
-  const Vec3 s = line.points[line.seedIndex].point;
-  const double rho0 = std::hypot(s.x(), s.y());
-  double worst = 0.0;
-  for (const auto& p : line.points)
-    worst = std::max(worst,
-                     std::hypot(std::hypot(p.point.x(), p.point.y()) - rho0, p.point.z() - s.z()));
-  return worst;
-}
-
-double meridianDrift(const Streamline& line) {
-  const double u0 = angleU(line.points[line.seedIndex].point);
-  double worst = 0.0;
-  for (const auto& p : line.points) {
-    const double du = std::remainder(angleU(p.point) - u0, 2.0 * std::numbers::pi);
-    worst = std::max(worst, std::abs(du) * std::hypot(p.point.x(), p.point.y()));
-  }
-  return worst;
-}
-
-void expectOnSurface(const ddf::DisplacementField& ddf, const Streamline& line) {
-  for (const auto& p : line.points) {
-    ASSERT_GE(p.bary.minCoeff(), 0.0);
-    ASSERT_NEAR(p.bary.sum(), 1.0, 1e-12);
-    EXPECT_LT((ddf.pointAt(p.face, p.bary, p.h) - p.point).norm(), 1e-12);
-    EXPECT_NEAR(p.h, ddf::interpolateOnFace(ddf, ddf.allHeights(), p.face, p.bary), 1e-6);
-  }
-}
-
-double maxGap(const Streamline& line) {
-  double gap = 0.0;
-  for (std::size_t i = 1; i < line.points.size(); ++i)
-    gap = std::max(gap, (line.points[i].point - line.points[i - 1].point).norm());
-  return gap;
+  return seedNear(torus().ddf, ddf::TorusSurface(kMajor, kMinor).point(u, v));
 }
 
 struct TorusCase {
@@ -241,169 +148,6 @@ TEST(Streamline, EllipsoidMaxLineStaysOnItsConfocalQuadric) {
   EXPECT_EQ(line.stop, Streamline::ClosedLoop);
   EXPECT_LE(drift, 0.5 * h);
   expectOnSurface(ddf, line);
-}
-
-const GeneratedSurface& cylinder() {
-  static const GeneratedSurface part =
-      ddf::cylinderPart({.radiusMm = 10.0, .lengthMm = 30.0, .segments = 48, .rings = 12, .m = 5});
-  return part;
-}
-
-LineField constantField(const ddf::DisplacementField& ddf, const Vec3& d) {
-  return LineField(ddf.allHeights().size(), d);
-}
-
-LineField circumferentialField(const ddf::DisplacementField& ddf) {
-  LineField out;
-  const int n = ddf.raster().steps();
-  for (int f = 0; f < ddf.faceCount(); ++f)
-    for (int k = 0; k <= n; ++k)
-      for (int i = 0; i <= n - k; ++i) {
-        const Vec3 q = ddf.surfacePoint(f, i, k);
-        out.push_back(Vec3(-q.y(), q.x(), 0.0).normalized());
-      }
-  return out;
-}
-
-TEST(Streamline, StopsAtTheBoundaryOfAnOpenPatch) {
-  const ddf::DisplacementField& ddf = cylinder().ddf;
-  const Streamline line =
-      traceStreamline(ddf, constantField(ddf, Vec3::UnitZ()), {100, Vec3(0.2, 0.3, 0.5)});
-  EXPECT_EQ(line.stop, Streamline::Boundary);
-  EXPECT_EQ(line.backwardStop, Streamline::Boundary);
-  EXPECT_NEAR(line.points.front().point.z(), 0.0, 1e-9);
-  EXPECT_NEAR(line.points.back().point.z(), 30.0, 1e-9);
-  EXPECT_NEAR(line.lengthMm, 30.0, 1e-3);
-  const Vec3 s = line.points[line.seedIndex].point;
-  for (const auto& p : line.points)
-    EXPECT_LT(std::hypot(p.point.x() - s.x(), p.point.y() - s.y()), 1e-3);
-  expectOnSurface(ddf, line);
-}
-
-TEST(Streamline, StopsNearAnExistingPathAndAtMaxLength) {
-  const ddf::DisplacementField& ddf = cylinder().ddf;
-  const LineField axial = constantField(ddf, Vec3::UnitZ());
-  StreamlineParams params;
-  for (int i = 0; i < 360; ++i) {
-    const double a = i * std::numbers::pi / 180.0;
-    params.existingPaths.push_back({Vec3(10 * std::cos(a), 10 * std::sin(a), 20.0)});
-  }
-  params.nearPathDistanceMm = 0.5;
-  const SurfaceLocation seed{100, Vec3(0.2, 0.3, 0.5)};
-  const Streamline near = traceStreamline(ddf, axial, seed, params);
-  EXPECT_EQ(near.stop, Streamline::NearExistingPath);
-  EXPECT_GT(near.points.back().point.z(), 19.4);
-  EXPECT_LT(near.points.back().point.z(), 20.01);
-  params.nearPathDistanceMm = 0.0;
-  params.maxLengthMm = 5.0;
-  const Streamline capped = traceStreamline(ddf, axial, seed, params);
-  EXPECT_EQ(capped.stop, Streamline::MaxLength);
-  EXPECT_NEAR(capped.lengthMm, 5.0, 1e-6);
-}
-
-TEST(Streamline, StopsAtARegionBoundaryAndStaysInsideIt) {
-  const ddf::DisplacementField& ddf = cylinder().ddf;
-  // The region: faces whose centroid lies at 5 < z < 20 mm (whole rings of 2.5 mm).
-  std::vector<std::uint8_t> mask(static_cast<std::size_t>(ddf.faceCount()), 0);
-  for (int f = 0; f < ddf.faceCount(); ++f) {
-    const double z = ddf.pointAt(f, Vec3::Constant(1.0 / 3.0), 0.0).z();
-    mask[static_cast<std::size_t>(f)] = (z > 5.0 && z < 20.0) ? 1 : 0;
-  }
-  StreamlineParams params;
-  params.faceMask = mask;
-  int seedFace = 0;
-  while (!mask[static_cast<std::size_t>(seedFace)]) ++seedFace;
-  const Streamline line =
-      traceStreamline(ddf, constantField(ddf, Vec3::UnitZ()), {seedFace, Vec3(0.2, 0.3, 0.5)}, params);
-  EXPECT_EQ(line.stop, Streamline::RegionBoundary);
-  EXPECT_EQ(line.backwardStop, Streamline::RegionBoundary);
-  for (const auto& p : line.points) EXPECT_TRUE(mask[static_cast<std::size_t>(p.face)]);
-  EXPECT_NEAR(line.points.front().point.z(), 5.0, 1e-9);
-  EXPECT_NEAR(line.points.back().point.z(), 20.0, 1e-9);
-  // A seed outside the region gives a one-point line.
-  int outside = 0;
-  while (mask[static_cast<std::size_t>(outside)]) ++outside;
-  const Streamline none =
-      traceStreamline(ddf, constantField(ddf, Vec3::UnitZ()), {outside, Vec3(0.2, 0.3, 0.5)}, params);
-  EXPECT_EQ(none.points.size(), 1u);
-  EXPECT_EQ(none.stop, Streamline::RegionBoundary);
-  params.faceMask.pop_back();
-  EXPECT_THROW(traceStreamline(ddf, constantField(ddf, Vec3::UnitZ()), {seedFace, Vec3(0.2, 0.3, 0.5)},
-                               params),
-               InvalidInput);
-}
-
-TEST(Streamline, StopsAtUndefinedField) {
-  const ddf::DisplacementField& ddf = cylinder().ddf;
-  LineField axial = constantField(ddf, Vec3::UnitZ());
-  // Undefine every entry at z > 22 mm.
-  const int n = ddf.raster().steps();
-  std::size_t idx = 0;
-  for (int f = 0; f < ddf.faceCount(); ++f)
-    for (int k = 0; k <= n; ++k)
-      for (int i = 0; i <= n - k; ++i, ++idx)
-        if (ddf.surfacePoint(f, i, k).z() > 22.0) axial[idx] = Vec3::Zero();
-  const Streamline line = traceStreamline(ddf, axial, {100, Vec3(0.2, 0.3, 0.5)});
-  EXPECT_EQ(line.stop, Streamline::Singularity);
-  EXPECT_EQ(line.backwardStop, Streamline::Boundary);
-  EXPECT_LT(line.points.back().point.z(), 22.0);
-  EXPECT_GT(line.points.back().point.z(), 22.0 - 2.5 - 0.5);  // within one ring of 2.5 mm
-}
-
-TEST(Streamline, SeedsAlongATransverseLineAreSpacedW) {
-  const ddf::DisplacementField& ddf = cylinder().ddf;
-  const double w = 2.0;
-  const SurfaceLocation seed{100, Vec3(0.2, 0.3, 0.5)};
-  const auto lines = seedAlongTransverse(ddf, constantField(ddf, Vec3::UnitZ()),
-                                         circumferentialField(ddf), seed, w);
-  // The circle of radius 10 closes: floor(2 pi 10 / w) + 1 seeds from the seed on.
-  ASSERT_EQ(lines.size(), 32u);
-  const double chord = 2.0 * 10.0 * std::sin(w / 20.0);
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    EXPECT_EQ(lines[i].stop, Streamline::Boundary);
-    EXPECT_EQ(lines[i].backwardStop, Streamline::Boundary);
-    EXPECT_NEAR(lines[i].lengthMm, 30.0, 1e-3);
-    if (i == 0) continue;
-    const Vec3 a = lines[i - 1].points[lines[i - 1].seedIndex].point;
-    const Vec3 b = lines[i].points[lines[i].seedIndex].point;
-    EXPECT_NEAR((b - a).norm(), chord, 0.01 * w) << i;
-  }
-}
-
-TEST(Streamline, MovingAverageKeepsEndsAndLines) {
-  std::vector<Vec3> line, zigzag;
-  for (int i = 0; i < 11; ++i) {
-    line.push_back(Vec3(i, 2.0 * i, -i));
-    zigzag.push_back(Vec3(i, i % 2 ? 0.3 : -0.3, 0.0));
-  }
-  const auto smoothLine = smoothMovingAverage(line, 3);
-  for (std::size_t i = 0; i < line.size(); ++i) EXPECT_LT((smoothLine[i] - line[i]).norm(), 1e-12);
-  const auto smoothZig = smoothMovingAverage(zigzag, 1);
-  EXPECT_EQ(smoothZig.front(), zigzag.front());
-  EXPECT_EQ(smoothZig.back(), zigzag.back());
-  for (std::size_t i = 1; i + 1 < zigzag.size(); ++i)
-    EXPECT_NEAR(std::abs(smoothZig[i].y()), 0.1, 1e-12);  // (-0.3 + 0.3 - 0.3) / 3
-  EXPECT_EQ(smoothMovingAverage(zigzag, 0), zigzag);
-  EXPECT_THROW(smoothMovingAverage(zigzag, -1), InvalidInput);
-}
-
-TEST(Streamline, RejectsBadInput) {
-  const ddf::DisplacementField& ddf = cylinder().ddf;
-  const LineField axial = constantField(ddf, Vec3::UnitZ());
-  EXPECT_THROW(traceStreamline(ddf, LineField(3), {0, Vec3(0.3, 0.3, 0.4)}), InvalidInput);
-  EXPECT_THROW(traceStreamline(ddf, axial, {-1, Vec3(0.3, 0.3, 0.4)}), InvalidInput);
-  EXPECT_THROW(seedAlongTransverse(ddf, axial, axial, {0, Vec3(0.3, 0.3, 0.4)}, 0.0), InvalidInput);
-}
-
-TEST(Streamline, CancelThrows) {
-  const ddf::DisplacementField& ddf = cylinder().ddf;
-  const LineField axial = constantField(ddf, Vec3::UnitZ());
-  StreamlineParams params;
-  params.progress = [](double) { return false; };
-  EXPECT_THROW(traceStreamline(ddf, axial, {100, Vec3(0.2, 0.3, 0.5)}, params), Cancelled);
-  EXPECT_THROW(seedAlongTransverse(ddf, axial, circumferentialField(ddf),
-                                   {100, Vec3(0.2, 0.3, 0.5)}, 2.0, params),
-               Cancelled);
 }
 
 }  // namespace

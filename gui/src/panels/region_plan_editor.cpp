@@ -66,6 +66,10 @@ RegionPlanEditor::RegionPlanEditor(QWidget* parent) : QWidget(parent) {
   spacing_ = spinBox(this, "regionSpacing", 0.001, 1e3, 3, " mm");
   tolerance_ = spinBox(this, "regionScallopTolerance", 0.0001, 10.0, 4, " mm");
   tolerance_->setSingleStep(0.001);
+  tolerance_->setToolTip(
+      tr("Largest scallop height between paths: with a ball the path spacing "
+         "follows the cross-feed curvature; a straight roll has no scallop "
+         "formula and uses the fixed spacing"));
   feed_ = comboBox(this, "regionFeedSign", {tr("+ along the field"), tr("- against the field")});
   linking_ = comboBox(this, "regionLinking", {tr("zig-zag"), tr("one direction")});
 
@@ -139,9 +143,12 @@ void RegionPlanEditor::updateEnabled() {
       source_->currentIndex() == static_cast<int>(planning::FlowFieldSource::FixedDirection);
   for (QDoubleSpinBox* box : direction_) box->setEnabled(fixed);
   weight_->setEnabled(smooth_->isChecked());
-  const bool bySpacing = spacingMode_->currentIndex() == 0;
-  spacing_->setEnabled(bySpacing);
-  tolerance_->setEnabled(!bySpacing);
+  // The fixed spacing also serves a scallop-tolerance plan whose tool is a straight roll.
+  tolerance_->setEnabled(spacingMode_->currentIndex() != 0);
+  const auto strokes = static_cast<int>(shown_.strokes.size());
+  source_->setItemText(static_cast<int>(planning::FlowFieldSource::UserStrokes),
+                       tr("drawn strokes (%1)").arg(strokes));
+  source_->setToolTip(tr("Strokes are drawn in the Streamlines panel with this region chosen"));
 }
 
 void RegionPlanEditor::emitEdited() {

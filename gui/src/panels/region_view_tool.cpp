@@ -108,6 +108,7 @@ RegionViewTool::~RegionViewTool() {
   // and their panels: touch only the view, and only while it lives.
   if (!view_) return;
   view_->removeEventFilter(this);
+  view_->setMouseTracking(false);
   view_->renderer()->RemoveActor(colours_);
   view_->annotationRenderer()->RemoveActor2D(outline_);
 }
@@ -118,9 +119,12 @@ void RegionViewTool::setMode(RegionEditMode mode) {
   painted_.clear();
   lasso_.clear();
   outline_->VisibilityOff();
-  workbench_.partView.view().setCursor(mode == RegionEditMode::None ? Qt::ArrowCursor
-                                                                    : Qt::CrossCursor);
-  workbench_.partView.view().requestRender();
+  hideBrushCursor();
+  VtkView& view = workbench_.partView.view();
+  view.setCursor(mode == RegionEditMode::None ? Qt::ArrowCursor : Qt::CrossCursor);
+  // The brush circle follows the mouse with no button pressed.
+  view.setMouseTracking(mode == RegionEditMode::Brush || mode == RegionEditMode::Erase);
+  view.requestRender();
 }
 
 void RegionViewTool::setColoursVisible(bool visible) {
@@ -288,6 +292,11 @@ void RegionViewTool::finishLasso() {
 bool RegionViewTool::eventFilter(QObject* watched, QEvent* event) {
   if (mode_ == RegionEditMode::None) return QObject::eventFilter(watched, event);
   const QEvent::Type type = event->type();
+  if (type == QEvent::KeyPress || type == QEvent::ShortcutOverride) return handleKey(event);
+  if (type == QEvent::Leave) hideBrushCursor();
+  const bool brush = mode_ == RegionEditMode::Brush || mode_ == RegionEditMode::Erase;
+  if (brush && type == QEvent::MouseMove)
+    updateBrushCursor(static_cast<QMouseEvent*>(event)->position());
   if (type != QEvent::MouseButtonPress && type != QEvent::MouseMove &&
       type != QEvent::MouseButtonRelease)
     return QObject::eventFilter(watched, event);
@@ -299,6 +308,7 @@ bool RegionViewTool::eventFilter(QObject* watched, QEvent* event) {
       return true;
     }
     dragging_ = true;
+    view_->setFocus(Qt::MouseFocusReason);  // for Escape
     painted_.clear();
     lasso_.assign(1, mouse->position());
     if (mode_ != RegionEditMode::Lasso) paintAt(mouse->position());

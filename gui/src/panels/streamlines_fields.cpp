@@ -66,32 +66,7 @@ std::vector<std::uint8_t> regionFaceMask(const ddf::DisplacementField& part,
 std::vector<planning::Streamline> smoothStreamlines(const ddf::DisplacementField& part,
                                                     const std::vector<planning::Streamline>& lines,
                                                     int halfWindow) {
-  std::vector<planning::Streamline> out;
-  out.reserve(lines.size());
-  for (const planning::Streamline& raw : lines) {
-    planning::Streamline line = raw;
-    const std::vector<ddf::Vec3> smooth = planning::smoothMovingAverage(raw.polyline(), halfWindow);
-    line.lengthMm = 0.0;
-    const auto count = static_cast<int>(smooth.size());
-    for (int i = 0; i < count; ++i) {
-      // The filter also moves points along the line, possibly off their raw face: of the faces
-      // in the window, the one whose surface point is nearest to the filtered point wins.
-      double best = std::numeric_limits<double>::infinity();
-      int lastFace = -1;
-      for (int j = std::max(0, i - halfWindow); j <= std::min(count - 1, i + halfWindow); ++j) {
-        const int face = raw.points[j].face;
-        if (face == lastFace) continue;
-        lastFace = face;
-        const auto at = ddf::locateOnFace(part, face, smooth[i]);
-        if (!at || (at->point - smooth[i]).norm() >= best) continue;
-        best = (at->point - smooth[i]).norm();
-        line.points[i] = *at;
-      }
-      if (i > 0) line.lengthMm += (line.points[i].point - line.points[i - 1].point).norm();
-    }
-    out.push_back(std::move(line));
-  }
-  return out;
+  return planning::smoothOnSurface(part, lines, halfWindow);
 }
 
 }  // namespace ddfcam::gui

@@ -48,10 +48,8 @@ std::shared_ptr<StreamlinesPanel::Fields> computeStreamlineFields(
 std::vector<std::uint8_t> regionFaceMask(const ddf::DisplacementField& part,
                                          const planning::Region& region);
 
-/// @p lines low-pass filtered by planning::smoothMovingAverage with @p halfWindow, every
-/// filtered point put back on the surface through ddf::locateOnFace: of the raw faces of the
-/// points in its window, the one giving the surface point nearest to it (the raw location
-/// where all fail).
+/// @p lines each low-pass filtered on the surface by planning::smoothOnSurface with
+/// @p halfWindow.
 std::vector<planning::Streamline> smoothStreamlines(const ddf::DisplacementField& part,
                                                     const std::vector<planning::Streamline>& lines,
                                                     int halfWindow);

@@ -74,9 +74,13 @@ StreamlinesPanel::StreamlinesPanel(Workbench& workbench, QWidget* parent)
       rawLines_.clear();
       linkedIdle_.clear();
       pathList_->setLinkedIdle({});
-      clearStrokes();
+      strokes_.clear();  // the panel's own; region strokes went with the regions
+      stroke_.reset();
     }
-    if (what & (Change::Part | Change::Regions)) refreshRegions();
+    if (what & (Change::Part | Change::Regions)) {
+      refreshRegions();
+      showStrokes();  // a region's strokes may have changed (drawn, cleared, undone)
+    }
     if (what & (Change::Part | Change::Paths)) {
       pathList_->refresh(this->workbench().document.project());
       updatePreview();
@@ -178,6 +182,17 @@ QWidget* StreamlinesPanel::buildSeedGroup() {
   spacing_->setRange(0.05, 100.0);
   spacing_->setValue(2.0);
   spacing_->setSuffix(" mm");
+  method_ = new QComboBox(group);
+  method_->setObjectName("streamlineMethodCombo");
+  method_->addItem(tr("RK4 in the support faces"),
+                   static_cast<int>(planning::StreamlineMethod::Rk4));
+  method_->addItem(tr("raster walk (error compensation, low-pass)"),
+                   static_cast<int>(planning::StreamlineMethod::RasterWalk));
+  method_->addItem(tr("continuous (3D steps, V-projection)"),
+                   static_cast<int>(planning::StreamlineMethod::Continuous));
+  method_->setToolTip(
+      tr("Tracer of click seeding and of families (sec. 8.3). "
+         "\"Cover region\" always traces with RK4."));
   auto* family = new QPushButton(tr("Seed family at last pick"), group);
   family->setObjectName("seedFamilyButton");
   dSep_ = new QDoubleSpinBox(group);
@@ -187,11 +202,16 @@ QWidget* StreamlinesPanel::buildSeedGroup() {
   dSep_->setSuffix(" mm");
   auto* cover = new QPushButton(tr("Cover region"), group);
   cover->setObjectName("coverRegionButton");
+  cover->setToolTip(
+      tr("Evenly spaced lines (Jobard-Lefer), traced with RK4 whatever the "
+         "method; a ball tool in a scallop-tolerance plan spaces them by "
+         "curvature"));
   link_ = new QCheckBox(tr("Order and link lines (zig-zag)"), group);
   link_->setObjectName("linkLinesCheck");
   link_->setChecked(true);
   auto* form = new QFormLayout(group);
   form->addRow(seedByClick_);
+  form->addRow(tr("Method"), method_);
   form->addRow(tr("Spacing w"), spacing_);
   form->addRow(family);
   form->addRow(tr("d_sep"), dSep_);
@@ -258,7 +278,7 @@ FieldChoice StreamlinesPanel::currentChoice() const {
                   : item == DrawnStrokes ? Source::UserStrokes
                                          : Source::FixedDirection;
   if (item >= FixedX && item <= FixedZ) choice.fixedDirection = ddf::Vec3::Unit(item - FixedX);
-  if (item == DrawnStrokes) choice.strokes = strokes_;
+  if (item == DrawnStrokes) choice.strokes = strokes();
   choice.smoothing = smooth_->isChecked();
   choice.smoothnessWeight = weight_->value();
   const int region = region_->currentData().isValid() ? region_->currentData().toInt() : -1;
@@ -290,6 +310,7 @@ void StreamlinesPanel::setRegion(int index) {
   const auto& regions = workbench().document.project().regions;
   if (index < 0 || index >= static_cast<int>(regions.size())) {
     region_->setCurrentIndex(0);
+    showStrokes();
     return;
   }
   region_->setCurrentIndex(index + 1);
@@ -298,6 +319,15 @@ void StreamlinesPanel::setRegion(int index) {
   setFieldSmoothing(plan.smoothField, plan.smoothnessWeight);
   spacing_->setValue(plan.spacingMm);
   dSep_->setValue(plan.spacingMm);
+  showStrokes();
+}
+
+void StreamlinesPanel::setStreamlineMethod(planning::StreamlineMethod method) {
+  method_->setCurrentIndex(method_->findData(static_cast<int>(method)));
+}
+
+planning::StreamlineMethod StreamlinesPanel::streamlineMethod() const {
+  return static_cast<planning::StreamlineMethod>(method_->currentData().toInt());
 }
 
 void StreamlinesPanel::setSeedByClick(bool on) {

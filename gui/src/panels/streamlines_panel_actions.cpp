@@ -15,7 +15,6 @@
 #include <ddfcam/gui/path_commands.h>
 #include <ddfcam/gui/path_list.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/planning/evenly_spaced_streamlines.h>
 #include <ddfcam/planning/path_linking.h>
 #include <ddfcam/planning/streamline_fairing.h>
 #include <ddfcam/planning/streamline_path.h>
@@ -29,6 +28,7 @@
 #include <QSlider>
 
 #include <algorithm>
+#include <optional>
 
 namespace ddfcam::gui {
 
@@ -56,9 +56,27 @@ planning::LinkedPaths linkLines(const ddf::DisplacementField& part,
   return linked;
 }
 
+/// @p line without repeated points (a trace that stalls at a boundary) and fold-backs onto
+/// the point before (A B A): they leave no feed direction for a roll's pose.
+void dropRepeatedPoints(planning::Streamline& line) {
+  constexpr double kEpsMm = 1e-6;
+  std::vector<ddf::SurfaceLocation> kept;
+  for (const ddf::SurfaceLocation& q : line.points) {
+    if (!kept.empty() && (q.point - kept.back().point).norm() <= kEpsMm) continue;
+    if (kept.size() >= 2 && (q.point - kept[kept.size() - 2].point).norm() <= kEpsMm) {
+      kept.pop_back();
+      continue;
+    }
+    kept.push_back(q);
+  }
+  line.points = std::move(kept);
+  line.seedIndex = std::min(line.seedIndex, line.points.empty() ? 0 : line.points.size() - 1);
+}
+
 }  // namespace
 
-bool StreamlinesPanel::runWithFields(const QString& title, LineWork work, const QString& pathName) {
+bool StreamlinesPanel::runWithFields(const QString& title, LineWork work, const QString& pathName,
+                                     std::shared_ptr<const QString> note) {
   const auto& part = workbench().document.project().part;
   if (!part) {
     workbench().reportError(title, tr("There is no part."));
@@ -82,10 +100,12 @@ bool StreamlinesPanel::runWithFields(const QString& title, LineWork work, const 
       lines = work(*copy, *fields,
                    [&](double f) { return !progress || progress(share + (1.0 - share) * f); });
     return std::function<void()>(
-        [self, fields, lines = std::move(lines), pathName, generation]() mutable {
+        [self, fields, lines = std::move(lines), pathName, generation, note]() mutable {
           if (!self || self->generation_ != generation) return;  // computed for another part
           self->adoptFields(fields);
           if (!pathName.isEmpty()) self->addPath(std::move(lines), pathName);
+          if (note && !note->isEmpty())
+            self->status_->setText(self->status_->text() + "\n" + *note);
         });
   });
 }
@@ -117,65 +137,11 @@ bool StreamlinesPanel::showField() {
   return runWithFields(tr("Compute tool flow field"), nullptr, {});
 }
 
-bool StreamlinesPanel::seedAt(const ddf::SurfaceLocation& seed) {
-  const std::vector<std::uint8_t> mask = currentChoice().faceMask;
-  return runWithFields(
-      tr("Trace streamline"),
-      [seed, mask](const ddf::DisplacementField& part, const Fields& fields,
-                   const ProgressCallback& progress) {
-        planning::StreamlineParams params;
-        params.faceMask = mask;
-        params.progress = progress;
-        return std::vector<planning::Streamline>{
-            planning::traceStreamline(part, fields.field, seed, params)};
-      },
-      tr("streamline"));
-}
-
-bool StreamlinesPanel::seedFamily() {
-  if (!lastPick_) {
-    workbench().reportError(tr("Seed family"), tr("Pick a point on the part first."));
-    return false;
-  }
-  const ddf::SurfaceLocation seed = *lastPick_;
-  const double spacing = spacing_->value();
-  const std::vector<std::uint8_t> mask = currentChoice().faceMask;
-  return runWithFields(
-      tr("Seed streamline family"),
-      [seed, spacing, mask](const ddf::DisplacementField& part, const Fields& fields,
-                            const ProgressCallback& progress) {
-        planning::StreamlineParams params;
-        params.faceMask = mask;
-        params.progress = progress;
-        return planning::seedAlongTransverse(part, fields.field, fields.transverse, seed, spacing,
-                                             params);
-      },
-      tr("streamline family"));
-}
-
-bool StreamlinesPanel::coverRegion(double dSepMm) {
-  if (!(dSepMm > 0)) {
-    workbench().reportError(tr("Cover region"), tr("d_sep must be positive."));
-    return false;
-  }
-  const std::vector<std::uint8_t> mask = currentChoice().faceMask;
-  return runWithFields(
-      tr("Cover region with streamlines"),
-      [dSepMm, mask](const ddf::DisplacementField& part, const Fields& fields,
-                     const ProgressCallback& progress) {
-        planning::EvenSpacingParams params;
-        params.separationMm = dSepMm;
-        params.faceMask = mask;
-        params.progress = progress;
-        return planning::evenlySpacedStreamlines(part, fields.field, params);
-      },
-      tr("coverage"));
-}
-
 void StreamlinesPanel::addPath(std::vector<planning::Streamline> lines, const QString& name) {
   runUserAction(workbench().reportError, tr("Add %1").arg(name), [&] {
     Document& document = workbench().document;
     const planning::Project& p = document.project();
+    for (planning::Streamline& line : lines) dropRepeatedPoints(line);
     std::erase_if(lines, [](const planning::Streamline& l) { return l.points.size() < 2; });
     const planning::RegionPlan* plan = selectedPlan();
     QString idle;

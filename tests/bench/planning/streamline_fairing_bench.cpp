@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Benchmark: Ceres fairing of a noisy 1,000-5,000-point streamline against the moving average.
+#include "../../support/surface_locate.h"
+
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/ddf/surface_sampling.h>
 #include <ddfcam/planning/streamline.h>
@@ -24,21 +26,7 @@ const ddf::GeneratedSurface& cylinder() {
   return part;
 }
 
-SurfaceLocation locateNear(const ddf::DisplacementField& ddf, const Vec3& target) {
-  const Vec3 third = Vec3::Constant(1.0 / 3.0);
-  std::vector<std::pair<double, int>> order;
-  for (int f = 0; f < ddf.faceCount(); ++f)
-    order.push_back({(ddf.basePoint(f, third) - target).squaredNorm(), f});
-  std::partial_sort(order.begin(), order.begin() + 6, order.end());
-  SurfaceLocation best;
-  double bestDistance = INFINITY;
-  for (int c = 0; c < 6; ++c) {
-    const auto loc = ddf::locateOnFace(ddf, order[c].second, target);
-    if (loc && (loc->point - target).norm() < bestDistance)
-      best = *loc, bestDistance = (loc->point - target).norm();
-  }
-  return best;
-}
+using ::ddfcam::test::locateNear;
 
 // A 40 mm helix (pitch angle 30 deg) on the r = 10 mm cylinder with a +-0.02 mm zig-zag
 // across it within the surface, as @p points surface locations (generated once per size).

@@ -21,6 +21,27 @@ struct FieldRange {
 /// @return std::nullopt if there is no finite value.
 std::optional<FieldRange> fieldRange(std::span<const float> values);
 
+/// @brief Options of robustFieldRange().
+struct RobustRangeParams {
+  /// Fraction of the finite values allowed below the range (default 0.01).
+  double lowerFraction = 0.01;
+  /// Fraction of the finite values allowed above the range (default 0.01).
+  double upperFraction = 0.01;
+  /// The quantile range replaces the full range only when the full range is more than this
+  /// many times wider, i.e. when a few outliers would wash out the colours (default 2).
+  double outlierSpanRatio = 2.0;
+};
+
+/// @brief Range for an automatic colour scale: the full range of the finite values, unless a
+/// few outliers make it more than params.outlierSpanRatio times wider than the range between
+/// the lowerFraction and (1 - upperFraction) quantiles, which is then returned (e.g. curvature
+/// spikes at the sharp edges of a scanned part). A degenerate quantile range (most values
+/// equal) keeps the full range. finiteCount and invalidCount count all values.
+/// @return std::nullopt if there is no finite value.
+/// @throws InvalidInput if a fraction is outside [0, 0.5) or the ratio is below 1.
+std::optional<FieldRange> robustFieldRange(std::span<const float> values,
+                                           const RobustRangeParams& params = {});
+
 /// @brief Counts of values in equal bins over [lo, hi].
 struct Histogram {
   double lo = 0.0;                  ///< lower edge of bin 0

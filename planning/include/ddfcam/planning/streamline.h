@@ -149,4 +149,22 @@ std::vector<ddf::SurfaceLocation> seedsAlong(const ddf::DisplacementField& ddf,
 /// @throws InvalidInput if halfWindow < 0.
 std::vector<ddf::Vec3> smoothMovingAverage(const std::vector<ddf::Vec3>& points, int halfWindow);
 
+/// @brief smoothMovingAverage of @p line's polyline, put back onto the DDF surface: each
+/// filtered point is located (ddf::locateOnFace) on the faces of the raw points in its window
+/// and the nearest surface point wins (the filter also slides points along the line, possibly
+/// off their raw face). A filtered point whose foot lies on none of those faces is clamped
+/// onto the nearest of them; one no face of its window can locate keeps its raw location.
+/// Stop reasons and seed index are kept; lengthMm is recomputed.
+/// @param line a streamline on @p ddf (faces in range).
+/// @param halfWindow k >= 0 (0 re-locates the raw points).
+/// @return the smoothed line, #line.points locations (mm, part frame).
+/// @throws InvalidInput if halfWindow < 0.
+Streamline smoothOnSurface(const ddf::DisplacementField& ddf, const Streamline& line,
+                           int halfWindow);
+
+/// @brief smoothOnSurface of every line of @p lines (same order).
+/// @throws InvalidInput if halfWindow < 0.
+std::vector<Streamline> smoothOnSurface(const ddf::DisplacementField& ddf,
+                                        const std::vector<Streamline>& lines, int halfWindow);
+
 }  // namespace ddfcam::planning

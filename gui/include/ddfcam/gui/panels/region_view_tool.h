@@ -40,7 +40,10 @@ enum class RegionEditMode {
 /// active, turns left drags on the VtkView into brush strokes or lassos through an event
 /// filter (other buttons and the wheel still move the camera). A stroke or a lasso is one
 /// SetRegionsCommand when the button is released; during a stroke the colours show the
-/// painted faces as a preview.
+/// painted faces as a preview. While the brush or eraser is active, a circle of the brush
+/// radius lies under the mouse (overlay kBrushCursorOverlay, in the tangent plane of the
+/// surface at the point under the mouse). Escape during a stroke or lasso cancels it: the
+/// regions stay as they were and no undo step is made.
 class RegionViewTool : public QObject {
   Q_OBJECT
 
@@ -49,10 +52,13 @@ class RegionViewTool : public QObject {
   RegionViewTool(Workbench& workbench, std::function<int()> target, QObject* parent = nullptr);
   ~RegionViewTool() override;
 
+  /// Overlay showing the brush radius under the mouse (brush and eraser modes).
+  static constexpr const char* kBrushCursorOverlay = "brush cursor";
+
   void setMode(RegionEditMode mode);
   RegionEditMode mode() const { return mode_; }
   /// @brief Brush radius, mm (> 0).
-  void setBrushRadiusMm(double radiusMm) { radiusMm_ = radiusMm; }
+  void setBrushRadiusMm(double radiusMm);
   /// @brief Shows or hides the region colours.
   void setColoursVisible(bool visible);
   bool coloursVisible() const { return coloursVisible_; }
@@ -61,6 +67,11 @@ class RegionViewTool : public QObject {
   /// @brief Support faces whose centroid projects inside @p polygon (widget pixels) and whose
   /// normal faces the camera.
   std::vector<int> facesInLasso(const std::vector<QPointF>& polygon) const;
+  /// @brief Cancels the brush stroke or lasso in progress (as Escape does): the preview is
+  /// dropped, nothing is pushed. @return true if one was in progress.
+  bool cancelStroke();
+  /// @brief Centre (mm, part frame) of the brush circle shown, if it is shown.
+  std::optional<Eigen::Vector3d> brushCursorCentre() const { return cursorCentre_; }
 
  signals:
   /// @brief An edit could not be made (e.g. no region selected); @p message says why.
@@ -73,6 +84,9 @@ class RegionViewTool : public QObject {
   void rebuildColours(const std::vector<planning::Region>& regions);
   void paintAt(QPointF pos);
   void finishStroke();
+  void updateBrushCursor(QPointF pos);
+  void hideBrushCursor();
+  bool handleKey(QEvent* event);
   void updateLassoOutline();
   void finishLasso();
   const planning::SurfacePointGrid& grid();
@@ -87,6 +101,8 @@ class RegionViewTool : public QObject {
   bool dragging_ = false;
   std::set<int> painted_;
   std::vector<QPointF> lasso_;
+  std::optional<Eigen::Vector3d> cursorCentre_;  ///< where the brush circle is drawn
+  QPointF cursorPos_;                            ///< widget position of the brush circle
   std::unique_ptr<planning::SurfacePointGrid> grid_;
   mutable std::optional<std::vector<planning::FaceFrame>> frames_;  ///< cache, per part state
   vtkSmartPointer<vtkPoints> lifted_;  ///< the surface's points moved off it, per geometry

@@ -41,10 +41,16 @@ struct PickResult;
 /// the whole part or on one region (its faces bound the field and the lines, its plan gives
 /// the defaults, tool and linking order). The field, both principal directions and the
 /// field's singularities are shown as glyph overlays (FlowFieldDisplay).
-/// Seeding: a click traces one streamline (planning::traceStreamline); a family is seeded
-/// every w mm along the transverse line through the last pick (planning::seedAlongTransverse,
-/// fig. 8.11); "Cover" fills the region with evenly spaced lines d_sep apart
-/// (planning::evenlySpacedStreamlines). Lines of a family or cover are ordered and oriented by
+/// Seeding: a click traces one streamline with the chosen method (RK4, raster walk or
+/// continuous, planning::traceStreamlineWith); a family is seeded every w mm along the
+/// transverse line through the last pick (fig. 8.11; the transverse line by RK4, the family's
+/// lines by the chosen method); "Cover" fills the region with evenly spaced lines d_sep apart
+/// (planning::evenlySpacedStreamlines, always RK4), or, for a region plan in ScallopTolerance
+/// mode with a ball tool, lines whose separation follows the scallop-height formula at the
+/// local cross-feed curvature (planning/scallop_spacing.h).
+/// Direction strokes drawn while a region is chosen belong to its plan (RegionPlan::strokes,
+/// each stroke and "Clear strokes" one SetRegionsCommand); on the whole part they belong to
+/// the panel. Lines of a family or cover are ordered and oriented by
 /// planning::linkStreamlines (zig-zag or one direction) when "link" is on. Each seeding adds
 /// one path (one undo step). The smoothing slider previews planning::smoothMovingAverage of
 /// the selected path's raw lines live (overlay kPreviewOverlay, no undo step); "Apply"
@@ -89,12 +95,21 @@ class StreamlinesPanel : public Panel {
   /// is added with addStroke().
   void setDrawDirection(bool on);
   /// @brief Adds a direction stroke (a polyline on the surface, mm, part frame, >= 2 points)
-  /// and selects the drawn-strokes field (FlowFieldSource::UserStrokes).
+  /// and selects the drawn-strokes field (FlowFieldSource::UserStrokes). With a region chosen
+  /// the stroke is appended to its plan's strokes and the plan's flow source set to
+  /// UserStrokes, as one undo step.
   void addStroke(std::vector<ddf::Vec3> stroke);
-  /// @brief Removes all drawn strokes.
+  /// @brief Removes all drawn strokes: the chosen region's (one undo step, none if it has no
+  /// strokes), else the panel's.
   void clearStrokes();
-  /// @brief The drawn strokes.
-  const std::vector<std::vector<ddf::Vec3>>& strokes() const { return strokes_; }
+  /// @brief The strokes the drawn-strokes field follows: the chosen region plan's, else the
+  /// panel's.
+  const std::vector<std::vector<ddf::Vec3>>& strokes() const;
+
+  /// @brief Chooses the tracer of click seeding and families (not of "Cover", which is RK4).
+  void setStreamlineMethod(planning::StreamlineMethod method);
+  /// @brief The tracer of click seeding and families.
+  planning::StreamlineMethod streamlineMethod() const;
 
   /// @brief Turns click seeding on or off (the "Seed by click" button).
   void setSeedByClick(bool on);
@@ -104,7 +119,12 @@ class StreamlinesPanel : public Panel {
   /// pick, spaced as set. @return true if the job started.
   bool seedFamily();
   /// @brief Covers the region (or the part) with evenly spaced lines @p dSepMm apart (> 0,
-  /// planning::evenlySpacedStreamlines, Jobard-Lefer). @return true if the job started.
+  /// planning::evenlySpacedStreamlines, Jobard-Lefer). For a region whose plan is in
+  /// ScallopTolerance mode and whose tool is a ball, the separation follows the scallop-height
+  /// formula at the local cross-feed curvature (planning::scallopSpacingField with
+  /// RegionPlan::scallopToleranceMm, at least 0.05 mm; @p dSepMm only where no value exists);
+  /// with a straight roll the plan's fixed spacing is used and the status label says why. @return
+  /// true if the job started.
   bool coverRegion(double dSepMm);
 
   /// @brief Sets the moving-average half window k of the slider (0: off); updates the preview.
@@ -129,6 +149,7 @@ class StreamlinesPanel : public Panel {
  private:
   void appendStrokePoint(QPointF widgetPos);
   void showStrokes();
+  void setPlanStrokes(std::vector<std::vector<ddf::Vec3>> strokes, const QString& text);
   /// Traces lines on a copy of the part with the current fields (worker thread).
   using LineWork = std::function<std::vector<planning::Streamline>(
       const ddf::DisplacementField& part, const Fields& fields, const ProgressCallback& progress)>;
@@ -140,7 +161,9 @@ class StreamlinesPanel : public Panel {
   void onPicked(const PickResult& pick);
   void refreshRegions();
   FieldChoice currentChoice() const;
-  bool runWithFields(const QString& title, LineWork work, const QString& pathName);
+  /// @p note, filled by @p work, is added to the status label when the path is added.
+  bool runWithFields(const QString& title, LineWork work, const QString& pathName,
+                     std::shared_ptr<const QString> note = nullptr);
   void adoptFields(std::shared_ptr<const Fields> fields);
   void addPath(std::vector<planning::Streamline> lines, const QString& name);
   void replaceSelected(std::vector<planning::Streamline> lines, const QString& what);
@@ -154,6 +177,7 @@ class StreamlinesPanel : public Panel {
   QCheckBox* smooth_ = nullptr;
   QDoubleSpinBox* weight_ = nullptr;
   QToolButton* seedByClick_ = nullptr;
+  QComboBox* method_ = nullptr;
   QToolButton* draw_ = nullptr;
   QObject* viewWidget_ = nullptr;  ///< the 3D view whose mouse events draw strokes (compared only)
   std::vector<std::vector<ddf::Vec3>> strokes_;

@@ -1,0 +1,251 @@
+// SPDX-License-Identifier: MIT
+// The issue-4 workflow on the shared bunny and turbine blade under Xvfb: File > Open of a mesh,
+// colour by k_max, automatic segmentation, covering the largest region with evenly spaced
+// lines; contacts checked by brute force against the mesh file.
+#include "frame_checks.h"
+#include "workbench_test.h"
+
+#include <ddfcam/gui/panels/fields_panel.h>
+#include <ddfcam/gui/panels/segmentation_panel.h>
+#include <ddfcam/gui/panels/streamlines_panel.h>
+#include <ddfcam/gui/part_scene.h>
+#include <ddfcam/gui/part_view.h>
+#include <ddfcam/gui/vtk_view.h>
+#include <ddfcam/io/mesh_io.h>
+#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/region_editing.h>
+
+#include <QAction>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QtTest/QtTest>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+using ddfcam::gui::FieldKind;
+using Vec3 = Eigen::Vector3d;
+
+namespace {
+
+QString sharedMesh(const char* file) {
+  return QString(DDFCAM_SHARED_DATA_DIR) + "/meshes/" + file;
+}
+
+/// Distance from @p p to triangle (a, b, c) (Ericson, Real-Time Collision Detection 5.1.5).
+double triangleDistance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return ap.norm();
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return bp.norm();
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (a + d1 / (d1 - d3) * ab)).norm();
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return cp.norm();
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (a + d2 / (d2 - d6) * ac)).norm();
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+    return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).norm();
+  const double denom = 1.0 / (va + vb + vc);
+  return (p - (a + ab * vb * denom + ac * vc * denom)).norm();
+}
+
+/// Bounding-box diagonal of the support vertices, mm.
+double diagonalOf(const ddfcam::ddf::DisplacementField& ddf) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (int v = 0; v < ddf.vertexCount(); ++v)
+    lo = lo.cwiseMin(ddf.position(v)), hi = hi.cwiseMax(ddf.position(v));
+  return (hi - lo).norm();
+}
+
+}  // namespace
+
+class SharedPartsGuiTest : public ddfcam::test::WorkbenchTest {
+  Q_OBJECT
+
+ private slots:
+  void initTestCase() { QVERIFY(openWorkbench(false)); }
+  void init() { f_.script.errors.clear(); }
+  void bunnyCurvatureSegmentationAndCover();
+  void turbineBladeColouredByKMax();
+
+ private:
+  template <typename T>
+  T* panel() {
+    return f_.window->findChild<T*>();
+  }
+  /// Opens @p file through File > Open (a job); false if the shared data is absent.
+  bool openMesh(const char* file);
+  /// Colours the part by k_max and checks the scalar bar against the data.
+  void colourByKMax();
+};
+
+bool SharedPartsGuiTest::openMesh(const char* file) {
+  const QString path = sharedMesh(file);
+  if (!QFileInfo::exists(path)) return false;
+  QElapsedTimer timer;
+  timer.start();
+  f_.script.openPath = path;
+  f_.window->findChild<QAction*>("actionOpen")->trigger();
+  waitOk();
+  qInfo("%s opened in %lld ms (m = %d, %d faces)", file, static_cast<long long>(timer.elapsed()),
+        project().part->resolution(), project().part->faceCount());
+  return true;
+}
+
+void SharedPartsGuiTest::colourByKMax() {
+  QElapsedTimer timer;
+  timer.start();
+  QVERIFY(panel<ddfcam::gui::FieldsPanel>()->compute(FieldKind::KMax));
+  waitOk();
+  const auto& kMax = project().fields.back();
+  QCOMPARE(QString::fromStdString(kMax.name), QString("k_max"));
+  const auto& scene = f_.window->partView().scene();
+  QVERIFY(scene.isFieldShown());
+  QCOMPARE(QString::fromStdString(scene.scalarBarTitle()), QString("k_max [1/mm]"));
+  // Oracle for the automatic range (symmetric about 0): the largest |k_max| unless the span
+  // of the data is more than 2x the span between its 1 % and 99 % quantiles (found here by a
+  // full sort), in which case the larger quantile magnitude.
+  double largest = 0.0;
+  std::vector<double> magnitudes, sorted;
+  for (float v : kMax.values)
+    if (std::isfinite(v)) {
+      largest = std::max(largest, std::abs(static_cast<double>(v)));
+      magnitudes.push_back(std::abs(v));
+      sorted.push_back(v);
+    }
+  std::sort(sorted.begin(), sorted.end());
+  const auto last = static_cast<double>(sorted.size() - 1);
+  const double q01 = sorted[static_cast<std::size_t>(std::floor(0.01 * last))];
+  const double q99 = sorted[static_cast<std::size_t>(std::floor(0.99 * last))];
+  const bool spiky = sorted.back() - sorted.front() > 2.0 * (q99 - q01);
+  const double expected = spiky ? std::max(std::abs(q01), std::abs(q99)) : largest;
+  const auto range = scene.scalarRange();
+  QCOMPARE(range.lo, -range.hi);
+  QVERIFY(std::abs(range.hi - expected) <= 1e-6 * expected);
+  qInfo("automatic range +-%.4g 1/mm (%s), largest |k_max| %.4g", range.hi,
+        spiky ? "1-99 % quantiles: spikes" : "full range", largest);
+  // Sensible: curvature of a part-sized sphere is 2 / diagonal; a useful map is not washed out
+  // by a few outliers, so report how much of the colour scale the typical point uses.
+  const double diagonal = diagonalOf(*project().part);
+  QVERIFY(range.hi > 2.0 / diagonal);
+  std::nth_element(magnitudes.begin(), magnitudes.begin() + magnitudes.size() * 9 / 10,
+                   magnitudes.end());
+  const double p90 = magnitudes[magnitudes.size() * 9 / 10];
+  // For a look: the same map over +-95th percentile of |k_max| (outliers saturate).
+  std::nth_element(magnitudes.begin(), magnitudes.begin() + magnitudes.size() * 19 / 20,
+                   magnitudes.end());
+  const double p95 = magnitudes[magnitudes.size() * 19 / 20];
+  f_.window->partView().setRange(-p95, p95);
+  f_.window->view()->viewFrom(ddfcam::gui::ViewDirection::PlusZ);
+  const QString part = QString::fromStdString(project().partName).section('.', 0, 0);
+  ddfcam::test::dumpFrame(f_.window->view()->renderImage(), "shared_" + part + "_kmax_p95");
+  f_.window->partView().setAutoRange();
+  qInfo(
+      "k_max in %lld ms: range +-%.4g 1/mm, 90th percentile of |k_max| %.4g 1/mm (%.1f %% of "
+      "the scale), 2/diagonal %.4g 1/mm",
+      static_cast<long long>(timer.elapsed()), range.hi, p90, 100.0 * p90 / range.hi,
+      2.0 / diagonal);
+}
+
+void SharedPartsGuiTest::bunnyCurvatureSegmentationAndCover() {
+  if (!openMesh("libigl-bunny.off")) QSKIP("shared data not found");
+  QCOMPARE(QString::fromStdString(project().partName), QString("libigl-bunny.off"));
+  colourByKMax();
+  auto& view = *f_.window->view();
+  f_.window->resize(1280, 820);
+  view.viewFrom(ddfcam::gui::ViewDirection::PlusZ);
+  ddfcam::test::dumpFrame(view.renderImage(), "shared_bunny_kmax");
+
+  // Automatic segmentation by curvature type.
+  QElapsedTimer timer;
+  timer.start();
+  auto* segmentation = panel<ddfcam::gui::SegmentationPanel>();
+  QVERIFY(segmentation != nullptr);
+  segmentation->setSegmentationOptions(ddfcam::gui::SegmentationMethod::CurvatureType, 1e-3, {}, 4);
+  QVERIFY(segmentation->segment());
+  waitOk();
+  const auto& regions = project().regions;
+  const auto& ddf = *project().part;
+  const std::vector<int> owner = ddfcam::planning::faceRegionIndex(regions, ddf.faceCount());
+  QCOMPARE(std::count(owner.begin(), owner.end(), -1), 0L);
+  int largest = 0;
+  for (std::size_t r = 0; r < regions.size(); ++r)
+    if (regions[r].faces.size() > regions[largest].faces.size()) largest = static_cast<int>(r);
+  qInfo("segmentation in %lld ms: %zu regions, largest %s (%zu faces)",
+        static_cast<long long>(timer.elapsed()), regions.size(), regions[largest].name.c_str(),
+        regions[largest].faces.size());
+
+  // Cover the largest region, d_sep = 1/40 of the diagonal.
+  timer.restart();
+  auto* streamlines = panel<ddfcam::gui::StreamlinesPanel>();
+  QVERIFY(streamlines != nullptr);
+  streamlines->setRegion(largest);
+  const double diagonal = diagonalOf(ddf);
+  const double dSep = diagonal / 40.0;
+  QVERIFY(streamlines->coverRegion(dSep));
+  waitOk();
+  QCOMPARE(project().paths.size(), std::size_t{1});
+  const auto& path = project().paths.front();
+  qInfo("cover in %lld ms: %zu lines, %zu contacts", static_cast<long long>(timer.elapsed()),
+        path.passStarts.size(), path.poses.size());
+  QVERIFY(path.passStarts.size() >= 3);
+
+  // Brute force: contacts on the mesh file's triangles, and on the region's faces.
+  const ddfcam::ddf::TriangleMesh mesh =
+      ddfcam::io::readMesh(sharedMesh("libigl-bunny.off").toStdString());
+  const auto& faces = project().regions[largest].faces;
+  double offMesh = 0.0, offRegion = 0.0;
+  for (std::size_t i = 0; i < path.poses.size(); i += 5) {
+    const Vec3& p = path.poses[i].contact;
+    double toMesh = std::numeric_limits<double>::infinity();
+    for (const auto& t : mesh.triangles)
+      toMesh = std::min(toMesh, triangleDistance(p, mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                                 mesh.vertices[t[2]]));
+    double toRegion = std::numeric_limits<double>::infinity();
+    for (int f : faces) {
+      const auto v = ddf.faceVertices(f);
+      toRegion = std::min(toRegion, triangleDistance(p, ddf.position(v[0]), ddf.position(v[1]),
+                                                     ddf.position(v[2])));
+    }
+    offMesh = std::max(offMesh, toMesh);
+    offRegion = std::max(offRegion, toRegion);
+  }
+  qInfo("contacts: farthest from the mesh %.3g x diagonal, from the region %.3g x diagonal",
+        offMesh / diagonal, offRegion / diagonal);
+  QVERIFY(offMesh <= 1e-6 * diagonal);
+  QVERIFY(offRegion <= 1e-6 * diagonal);
+  QCOMPARE(f_.window->partView().scene().overlayCellCount("paths"),
+           static_cast<long long>(path.passStarts.size()));
+
+  // Regions and paths, for a look: the lines over the region colours (no field). The tool
+  // of the selected path is hidden: the default tool dwarfs this 0.15 mm part.
+  qInfo("tool of the path: %s", project().tools.at(path.tool).name.c_str());
+  f_.window->partView().setToolOverlay(std::nullopt);
+  f_.window->partView().showField("");
+  segmentation->viewTool().setColoursVisible(true);
+  view.viewFrom(ddfcam::gui::ViewDirection::PlusZ);
+  ddfcam::test::dumpFrame(view.renderImage(), "shared_bunny_regions_paths");
+  view.viewFrom(ddfcam::gui::ViewDirection::PlusX);
+  ddfcam::test::dumpFrame(view.renderImage(), "shared_bunny_regions_paths_x");
+}
+
+void SharedPartsGuiTest::turbineBladeColouredByKMax() {
+  if (!openMesh("turbine-blade-jigsaw.stl")) QSKIP("shared data not found");
+  colourByKMax();
+  auto& view = *f_.window->view();
+  view.viewFrom(ddfcam::gui::ViewDirection::Isometric);
+  const QImage frame = view.renderImage();
+  const auto stats = ddfcam::test::frameStats(frame, QColor(frame.pixel(0, 0)));
+  QVERIFY(stats.centreForeground > 0.05);
+  ddfcam::test::dumpFrame(frame, "shared_blade_kmax");
+}
+
+QTEST_MAIN(SharedPartsGuiTest)
+#include "shared_parts_gui_test.moc"
