@@ -5,7 +5,7 @@
 #include <ddfcam/ddf/v_projection.h>
 #include <ddfcam/planning/streamline_continuous.h>
 
-#include <Eigen/Geometry>
+#include <Eigen/Dense>
 
 #include <algorithm>
 #include <array>
@@ -29,6 +29,34 @@ constexpr double kMaxRootHeight = 2.0;
 constexpr ddf::VProjectionParams kProjection{.newtonIterations = 1};
 // Consecutive edge cuts without progress before the line gives up: more than a vertex's fan.
 constexpr int kMaxIdleCuts = 24;
+
+// Newton iterations of the local V-projection before the closed-form cubic takes over.
+constexpr int kLocalNewtonIterations = 5;
+
+// V-projection of @p q onto @p face by Newton's method on g(mu) + h v(mu) = q from a nearby
+// (mu, h): a short step from a point on the surface lands next to it, and a few 3x3 solves
+// are far cheaper than the cubic of ddf::vProject with all its roots. Returns the foot mu
+// only when Newton converges; the caller checks that it lies on the face.
+std::optional<Vec3> localVProjection(const ddf::DisplacementField& ddf, int face, const Vec3& q,
+                                     Vec3 mu, double h) {
+  const auto& fv = ddf.faceVertices(face);
+  const Vec3 &p1 = ddf.position(fv[0]), &p2 = ddf.position(fv[1]), &p3 = ddf.position(fv[2]);
+  const Vec3 &v1 = ddf.vector(fv[0]), &v2 = ddf.vector(fv[1]), &v3 = ddf.vector(fv[2]);
+  for (int it = 0; it < kLocalNewtonIterations; ++it) {
+    const Vec3 v = mu[0] * v1 + mu[1] * v2 + mu[2] * v3;
+    const Vec3 r = mu[0] * p1 + mu[1] * p2 + mu[2] * p3 + h * v - q;
+    Eigen::Matrix3d j;
+    j.col(0) = (p1 - p2) + h * (v1 - v2);
+    j.col(1) = (p3 - p2) + h * (v3 - v2);
+    j.col(2) = v;
+    const Vec3 d = j.partialPivLu().solve(-r);
+    if (!d.allFinite()) return std::nullopt;
+    mu[0] += d[0], mu[2] += d[1], mu[1] = 1.0 - mu[0] - mu[2], h += d[2];
+    if (std::max({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])}) < 1e-13)
+      return std::abs(h) <= kMaxRootHeight ? std::optional<Vec3>(mu) : std::nullopt;
+  }
+  return std::nullopt;
+}
 
 // Runge-Kutta tableau of an explicit scheme: stage i starts at p + s sum_j a[i][j] k_j.
 struct Tableau {
@@ -97,6 +125,9 @@ std::optional<SurfaceLocation> Stepper::project(const Vec3& q, const SurfaceLoca
   // Nearly every step ends on the previous face: its root with the foot on the face continues
   // the line, so the hash is only asked when that face has none.
   if (rules_.allowed(prev.face)) {
+    if (const auto mu = localVProjection(ddf_, prev.face, q, prev.bary, prev.h);
+        mu && mu->minCoeff() >= -kInsideTolerance)
+      return sampler_.locate(prev.face, clampBary(*mu));
     for (const ddf::VProjection& root : ddf::vProject(ddf_, prev.face, q, kProjection)) {
       if (root.mu.allFinite() && root.mu.minCoeff() >= -kInsideTolerance &&
           std::abs(root.h) <= kMaxRootHeight)
