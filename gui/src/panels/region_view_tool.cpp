@@ -300,38 +300,45 @@ bool RegionViewTool::eventFilter(QObject* watched, QEvent* event) {
   if (type != QEvent::MouseButtonPress && type != QEvent::MouseMove &&
       type != QEvent::MouseButtonRelease)
     return QObject::eventFilter(watched, event);
-  auto* mouse = static_cast<QMouseEvent*>(event);
-  if (type == QEvent::MouseButtonPress) {
-    if (mouse->button() != Qt::LeftButton || mouse->modifiers() != Qt::NoModifier) return false;
-    if (mode_ != RegionEditMode::Erase && target_() < 0) {
-      emit refused(tr("Select a region to paint into first."));
-      return true;
-    }
-    dragging_ = true;
-    view_->setFocus(Qt::MouseFocusReason);  // for Escape
-    painted_.clear();
-    lasso_.assign(1, mouse->position());
-    if (mode_ != RegionEditMode::Lasso) paintAt(mouse->position());
-    return true;
-  }
+  const auto& mouse = *static_cast<QMouseEvent*>(event);
+  if (type == QEvent::MouseButtonPress) return handlePress(mouse);
   if (!dragging_) return false;
-  if (type == QEvent::MouseMove) {
-    if (mode_ == RegionEditMode::Lasso) {
-      const QPointF step = mouse->position() - lasso_.back();
-      if (std::hypot(step.x(), step.y()) >= 2.0) lasso_.push_back(mouse->position());
-      updateLassoOutline();
-    } else {
-      paintAt(mouse->position());
-    }
+  return type == QEvent::MouseMove ? handleMove(mouse) : handleRelease(mouse);
+}
+
+bool RegionViewTool::handlePress(const QMouseEvent& mouse) {
+  if (mouse.button() != Qt::LeftButton || mouse.modifiers() != Qt::NoModifier) return false;
+  if (mode_ != RegionEditMode::Erase && target_() < 0) {
+    emit refused(tr("Select a region to paint into first."));
     return true;
   }
-  if (mouse->button() != Qt::LeftButton) return false;
+  dragging_ = true;
+  view_->setFocus(Qt::MouseFocusReason);  // for Escape
+  painted_.clear();
+  lasso_.assign(1, mouse.position());
+  if (mode_ != RegionEditMode::Lasso) paintAt(mouse.position());
+  return true;
+}
+
+bool RegionViewTool::handleMove(const QMouseEvent& mouse) {
+  if (mode_ == RegionEditMode::Lasso) {
+    const QPointF step = mouse.position() - lasso_.back();
+    if (std::hypot(step.x(), step.y()) >= 2.0) lasso_.push_back(mouse.position());
+    updateLassoOutline();
+  } else {
+    paintAt(mouse.position());
+  }
+  return true;
+}
+
+bool RegionViewTool::handleRelease(const QMouseEvent& mouse) {
+  if (mouse.button() != Qt::LeftButton) return false;
   dragging_ = false;
   if (mode_ == RegionEditMode::Lasso) {
-    if (lasso_.back() != mouse->position()) lasso_.push_back(mouse->position());
+    if (lasso_.back() != mouse.position()) lasso_.push_back(mouse.position());
     finishLasso();
   } else {
-    paintAt(mouse->position());
+    paintAt(mouse.position());
     finishStroke();
   }
   return true;

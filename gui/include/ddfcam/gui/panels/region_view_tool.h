@@ -19,6 +19,7 @@
 
 #include <vtkSmartPointer.h>
 
+class QMouseEvent;
 class vtkActor;
 class vtkActor2D;
 class vtkPoints;
@@ -87,6 +88,10 @@ class RegionViewTool : public QObject {
   void updateBrushCursor(QPointF pos);
   void hideBrushCursor();
   bool handleKey(QEvent* event);
+  // Left-button press, drag and release of a stroke or lasso; true when the event is used.
+  bool handlePress(const QMouseEvent& mouse);
+  bool handleMove(const QMouseEvent& mouse);
+  bool handleRelease(const QMouseEvent& mouse);
   void updateLassoOutline();
   void finishLasso();
   const planning::SurfacePointGrid& grid();
