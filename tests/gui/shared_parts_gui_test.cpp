@@ -2,6 +2,7 @@
 // The issue-4 workflow on the shared bunny and turbine blade under Xvfb: File > Open of a mesh,
 // colour by k_max, automatic segmentation, covering the largest region with evenly spaced
 // lines; contacts checked by brute force against the mesh file.
+#include "../support/brute_force_distance.h"
 #include "frame_checks.h"
 #include "workbench_test.h"
 
@@ -30,30 +31,10 @@ using Vec3 = Eigen::Vector3d;
 
 namespace {
 
+using ddfcam::test::triangleDistance;
+
 QString sharedMesh(const char* file) {
   return QString(DDFCAM_SHARED_DATA_DIR) + "/meshes/" + file;
-}
-
-/// Distance from @p p to triangle (a, b, c) (Ericson, Real-Time Collision Detection 5.1.5).
-double triangleDistance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return ap.norm();
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return bp.norm();
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (a + d1 / (d1 - d3) * ab)).norm();
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return cp.norm();
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (a + d2 / (d2 - d6) * ac)).norm();
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
-    return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).norm();
-  const double denom = 1.0 / (va + vb + vc);
-  return (p - (a + ab * vb * denom + ac * vc * denom)).norm();
 }
 
 /// Bounding-box diagonal of the support vertices, mm.

@@ -6,6 +6,7 @@
 #include <ddfcam/io/ddf_file.h>
 #include <ddfcam/io/mesh_io.h>
 #include <ddfcam/io/tool_path_csv.h>
+#include "../support/brute_force_distance.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -22,6 +23,9 @@
 
 namespace ddfcam::io {
 namespace {
+
+using ddfcam::test::meshDistance;
+using ddfcam::test::triangleDistance;
 
 using ::testing::HasSubstr;
 
@@ -214,37 +218,6 @@ TEST(CliPlan, ScallopNeedsABall) {
   run = plan(dir, {"demo", "-o", out, "--scallop", "6", "--tool", "ball"});
   EXPECT_THAT(run.err, HasSubstr("smaller than the ball radius"));
   EXPECT_FALSE(std::filesystem::exists(out));
-}
-
-/// Distance from @p p to triangle (a, b, c) (Ericson, Real-Time Collision Detection 5.1.5).
-double triangleDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                        const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return ap.norm();
-  const Eigen::Vector3d bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return bp.norm();
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (a + d1 / (d1 - d3) * ab)).norm();
-  const Eigen::Vector3d cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return cp.norm();
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (a + d2 / (d2 - d6) * ac)).norm();
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
-    return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).norm();
-  const double denom = 1.0 / (va + vb + vc);
-  return (p - (a + ab * vb * denom + ac * vc * denom)).norm();
-}
-
-double meshDistance(const ddf::TriangleMesh& mesh, const Eigen::Vector3d& p) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const auto& t : mesh.triangles)
-    best = std::min(
-        best, triangleDistance(p, mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]));
-  return best;
 }
 
 /// Plans on a shared mesh and checks that every contact lies on the mesh (the converted part's

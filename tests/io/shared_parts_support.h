@@ -2,6 +2,8 @@
 // ddfcam tests: loading the shared turbine blade and bunny once, and brute-force distances.
 #pragma once
 
+#include "../support/brute_force_distance.h"
+
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/triangle_mesh.h>
 #include <ddfcam/io/mesh_io.h>
@@ -22,6 +24,8 @@
 namespace ddfcam::io::test {
 
 using ddf::Vec3;
+using ddfcam::test::meshDistance;
+using ddfcam::test::triangleDistance;
 
 /// Raster resolution of the converted parts: enough raster points per face for the blended
 /// vertex curvature, few enough for every stage to stay well below a second.
@@ -29,37 +33,6 @@ constexpr int kResolution = 5;
 
 inline double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-/// Distance from @p p to triangle (a, b, c) (Ericson, Real-Time Collision Detection 5.1.5).
-inline double triangleDistance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return ap.norm();
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return bp.norm();
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (a + d1 / (d1 - d3) * ab)).norm();
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return cp.norm();
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (a + d2 / (d2 - d6) * ac)).norm();
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
-    return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).norm();
-  const double denom = 1.0 / (va + vb + vc);
-  return (p - (a + ab * vb * denom + ac * vc * denom)).norm();
-}
-
-/// Brute force: distance from @p p to the nearest triangle of @p mesh.
-inline double meshDistance(const ddf::TriangleMesh& mesh, const Vec3& p) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const auto& t : mesh.triangles)
-    best = std::min(
-        best, triangleDistance(p, mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]));
-  return best;
 }
 
 inline double segmentDistance(const Vec3& q, const Vec3& a, const Vec3& b) {
