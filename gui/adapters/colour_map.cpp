@@ -178,6 +178,13 @@ ValueRange defaultRange(double min, double max, bool isSigned) {
   return {min - pad, max + pad};
 }
 
+std::string scaleLabelFormat(double lo, double hi) {
+  const double m = std::max(std::abs(lo), std::abs(hi));
+  if (!(m >= 1e-3 && m < 1e5)) return "%.2e";
+  const int decimals = std::max(0, 2 - static_cast<int>(std::floor(std::log10(m))));
+  return "%." + std::to_string(decimals) + "f";
+}
+
 vtkSmartPointer<vtkLookupTable> makeLookupTable(ColourMap map, double lo, double hi, int colours) {
   checkRange(lo, hi, "makeLookupTable");
   if (colours < 2)

@@ -237,6 +237,7 @@ void PartScene::setSurfaceField(const std::vector<float>& perVertexValues,
   mapper->InterpolateScalarsBeforeMappingOn();
   mapper->ScalarVisibilityOn();
   scalarBar_->SetLookupTable(table);
+  scalarBar_->SetLabelFormat(scaleLabelFormat(style.lo, style.hi).c_str());
   scalarBar_->SetTitle(style.title.c_str());
   scalarBar_->SetVisibility(1);
   fieldShown_ = true;

@@ -8,6 +8,7 @@
 #include <vtkLookupTable.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <set>
 #include <string>
@@ -49,6 +50,7 @@ class ColourMapTest : public QObject {
   void parameterIsClampedAndContinuous();
   void namesRoundTrip();
   void defaultRangeIsSymmetricForSignedFields();
+  void scaleLabelsStayShort();
   void lookupTableMapsRangeEndsToMapEnds();
   void lookupTableRejectsBadRanges();
 };
@@ -180,6 +182,27 @@ void ColourMapTest::lookupTableRejectsBadRanges() {
       ddfcam::InvalidInput,
       makeLookupTable(ColourMap::Viridis, 0.0, std::numeric_limits<double>::infinity()));
   QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput, makeLookupTable(ColourMap::Viridis, 0.0, 1.0, 1));
+}
+
+void ColourMapTest::scaleLabelsStayShort() {
+  using ddfcam::gui::scaleLabelFormat;
+  QCOMPARE(QString::fromStdString(scaleLabelFormat(-1305.0, 1305.0)), QString("%.0f"));
+  QCOMPARE(QString::fromStdString(scaleLabelFormat(0.0, 0.25)), QString("%.3f"));
+  QCOMPARE(QString::fromStdString(scaleLabelFormat(-554.5, 554.5)), QString("%.0f"));
+  QCOMPARE(QString::fromStdString(scaleLabelFormat(2.0, 5.0)), QString("%.2f"));
+  QCOMPARE(QString::fromStdString(scaleLabelFormat(-1e6, 1e6)), QString("%.2e"));
+  QCOMPARE(QString::fromStdString(scaleLabelFormat(0.0, 1e-4)), QString("%.2e"));
+  // Every label of five over a range keeps three significant digits of the larger end, without
+  // an exponent, in at most 8 characters.
+  for (const double hi : {1e-3, 0.0123, 0.25, 1.0, 7.5, 42.0, 554.5, 1305.0, 99999.0}) {
+    const std::string format = scaleLabelFormat(-hi, hi);
+    for (int i = 0; i < 5; ++i) {
+      char text[64];
+      std::snprintf(text, sizeof text, format.c_str(), -hi + i * hi / 2.0);
+      QVERIFY2(std::string(text).find('e') == std::string::npos, text);
+      QVERIFY2(std::string(text).size() <= 8, text);
+    }
+  }
 }
 
 QTEST_APPLESS_MAIN(ColourMapTest)

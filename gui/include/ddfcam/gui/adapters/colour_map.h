@@ -67,6 +67,12 @@ struct ValueRange {
 /// @throws InvalidInput if min or max is not finite or min > max.
 ValueRange defaultRange(double min, double max, bool isSigned);
 
+/// @brief printf format of the scale labels over [@p lo, @p hi]: fixed decimals for three
+/// significant digits of the larger magnitude m = max(|lo|, |hi|) when 1e-3 <= m < 1e5
+/// ("%.0f" for m = 1305, "%.3f" for m = 0.25), else "%.2e". Fixed notation keeps labels short
+/// enough not to run into each other (exponents like "-1.31e+03" do).
+std::string scaleLabelFormat(double lo, double hi);
+
 /// @brief A lookup table of @p colours entries sampling @p map evenly, mapping [@p lo, @p hi]
 /// onto it, with belowRangeColour() / aboveRangeColour() switched on for values outside. The
 /// table is complete: do not call Build() on it expecting a rebuild (VTK would only refresh its
