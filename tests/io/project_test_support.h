@@ -73,7 +73,7 @@ inline planning::Project makeSmallProject() {
 inline planning::Project makeRichProject() {
   planning::Project project;
   project.partName = "Teil \u00fc \u8a66\u9a13 \u2300 5";
-  project.sourcePath = "/tmp/M\u00fchle/part.stl";
+  project.sourcePath = "parts/M\u00fchle/part.stl";
   ddf::PlanePatchParams params;
   params.cellsX = 3;
   params.cellsY = 2;
