@@ -256,9 +256,13 @@ void putTool(std::string& out, const planning::Tool& tool) {
   putF64(out, tool.radiusMm);
   putF64(out, tool.widthMm);
   putI32(out, tool.segments);
+  for (const double value : {tool.edgeRadiusMm, tool.crownRadiusMm, tool.shankRadiusMm,
+                             tool.shankLengthMm, tool.holderRadiusMm, tool.holderLengthMm,
+                             tool.chordToleranceMm})
+    putF64(out, value);
 }
 
-planning::Tool readTool(PayloadReader& in) {
+planning::Tool readTool(PayloadReader& in, std::uint32_t formatVersion) {
   planning::Tool tool;
   tool.name = in.string("tool name");
   // Any int is a representable ToolKind; validateTool rejects the unknown ones by name.
@@ -266,6 +270,16 @@ planning::Tool readTool(PayloadReader& in) {
   tool.radiusMm = in.f64("tool radius");
   tool.widthMm = in.f64("tool width");
   tool.segments = in.i32("tool segments");
+  // Before version 3 tools were bare rolls and balls: the other fields keep their defaults.
+  if (formatVersion >= 3) {
+    tool.edgeRadiusMm = in.f64("tool edge radius");
+    tool.crownRadiusMm = in.f64("tool crown radius");
+    tool.shankRadiusMm = in.f64("tool shank radius");
+    tool.shankLengthMm = in.f64("tool shank length");
+    tool.holderRadiusMm = in.f64("tool holder radius");
+    tool.holderLengthMm = in.f64("tool holder length");
+    tool.chordToleranceMm = in.f64("tool chord tolerance");
+  }
   return tool;
 }
 

@@ -85,7 +85,9 @@ ddf::TriangleMesh readDesignMesh(PayloadReader& in);
 planning::ScalarField readField(PayloadReader& in);
 /// @param formatVersion version of the file: 1 (no plan, the default plan is used) or 2.
 planning::Region readRegion(PayloadReader& in, std::uint32_t formatVersion);
-planning::Tool readTool(PayloadReader& in);
+/// @param formatVersion version of the file: before 3 a tool ends after its segments and the
+/// fields added in version 3 keep the defaults of planning::Tool.
+planning::Tool readTool(PayloadReader& in, std::uint32_t formatVersion);
 planning::ToolPath readPath(PayloadReader& in);
 planning::SimulationState readState(PayloadReader& in);
 

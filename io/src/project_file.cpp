@@ -77,7 +77,7 @@ class ProjectDecoder {
     } else if (tag == detail::kTagRegion) {
       project_.regions.push_back(detail::readRegion(in, version_));
     } else if (tag == detail::kTagTool) {
-      project_.tools.push_back(detail::readTool(in));
+      project_.tools.push_back(detail::readTool(in, version_));
     } else if (tag == detail::kTagPath) {
       project_.paths.push_back(detail::readPath(in));
     } else if (tag == detail::kTagState) {

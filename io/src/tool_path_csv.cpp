@@ -104,7 +104,8 @@ namespace {
 
 /// Appends the rows of Cut move @p move (index @p m) from the poses of its pass.
 const planning::PathPose& appendCut(ToolPathCsv& table, const planning::PathMove& move, int m,
-                                    const planning::ToolPath& path) {
+                                    const planning::ToolPath& path,
+                                    const std::vector<ddf::Vec3>& normals) {
   const std::string item = "tool path CSV: cut move " + std::to_string(m);
   if (move.path < 0 || move.path >= passCount(path))
     throw InvalidInput(item + " refers to pass " + std::to_string(move.path) + " of " +
@@ -119,7 +120,9 @@ const planning::PathPose& appendCut(ToolPathCsv& table, const planning::PathMove
     const planning::PathPose& pose = path.poses[move.reversed ? end - 1 - i : begin + i];
     if ((pose.contact - move.points[i]).norm() > 1e-9)
       throw InvalidInput(item + ": point " + std::to_string(i) + " is not the contact of its pose");
-    ToolPathCsvRow row = rowOf(pose, derivedNormal(pose, begin + i), table.pointKind);
+    const int index = move.reversed ? end - 1 - i : begin + i;
+    ToolPathCsvRow row =
+        rowOf(pose, normals.empty() ? derivedNormal(pose, index) : normals[index], table.pointKind);
     row.path = m;
     row.point = i;
     row.feedMmPerMin = path.feedMmPerMin;
@@ -130,12 +133,12 @@ const planning::PathPose& appendCut(ToolPathCsv& table, const planning::PathMove
 }
 
 void appendIdle(ToolPathCsv& table, const planning::PathMove& move, int m,
-                const planning::PathPose& from, double feed) {
+                const planning::PathPose& from, const ddf::Vec3& normal, double feed) {
   const ddf::Vec3 offset = table.pointKind == CsvPointKind::Contact
                                ? ddf::Vec3::Zero()
                                : ddf::Vec3(from.pose.translation() - from.contact);
   for (std::size_t i = 0; i < move.points.size(); ++i) {
-    ToolPathCsvRow row = rowOf(from, derivedNormal(from, 0), table.pointKind);
+    ToolPathCsvRow row = rowOf(from, normal, table.pointKind);
     row.path = m;
     row.point = static_cast<int>(i);
     row.position = move.points[i] + offset;
@@ -148,16 +151,22 @@ void appendIdle(ToolPathCsv& table, const planning::PathMove& move, int m,
 }  // namespace
 
 ToolPathCsv linkedToolPathCsvRows(const planning::LinkedPaths& linked,
-                                  const planning::ToolPath& path, CsvPointKind kind) {
+                                  const planning::ToolPath& path, CsvPointKind kind,
+                                  const std::vector<ddf::Vec3>& normals) {
+  if (!normals.empty() && normals.size() != path.poses.size())
+    throw InvalidInput("tool path CSV: " + std::to_string(normals.size()) + " normals for " +
+                       std::to_string(path.poses.size()) + " poses");
   ToolPathCsv table{kind, {}};
   const planning::PathPose* last = nullptr;
   for (std::size_t m = 0; m < linked.moves.size(); ++m) {
     const planning::PathMove& move = linked.moves[m];
     if (move.kind == planning::MoveKind::Cut) {
-      last = &appendCut(table, move, static_cast<int>(m), path);
+      last = &appendCut(table, move, static_cast<int>(m), path, normals);
     } else {
       if (!last) throw InvalidInput("tool path CSV: move 0 is not a cut");
-      appendIdle(table, move, static_cast<int>(m), *last, path.feedMmPerMin);
+      const auto index = static_cast<std::size_t>(last - path.poses.data());
+      appendIdle(table, move, static_cast<int>(m), *last,
+                 normals.empty() ? derivedNormal(*last, index) : normals[index], path.feedMmPerMin);
     }
   }
   return table;

@@ -153,7 +153,7 @@ TEST(ProjectFile, SmallestFileMatchesTheDocumentedLayout) {
   planning::Project project;
   project.partName = "ab";
   std::string expected("DDFPRJ\x1a\n", 8);
-  expected += std::string("\x02\0\0\0", 4) + std::string("\x01\0\0\0", 4);
+  expected += std::string("\x03\0\0\0", 4) + std::string("\x01\0\0\0", 4);
   expected += std::string("\x32\0\0\0\0\0\0\0", 8);  // 50 bytes in all
   expected += "PROJ" + std::string("\x0a\0\0\0\0\0\0\0", 8);
   expected += std::string("\x02\0\0\0", 4) + "ab" + std::string(4, '\0');
@@ -203,21 +203,39 @@ TEST(ProjectFile, RegionPayloadsFollowTheDocumentedLayout) {
                        project.regions[0].plan.strokes.back()[0].data(), 24));
 }
 
-/// The .ddfproj of @p project as format version 1 wrote it: "REGN" payloads end after the
-/// faces, the header says version 1. Built here from the documented layout.
-std::string asVersion1(const planning::Project& project) {
-  planning::Project withoutPlans = project;
-  for (planning::Region& region : withoutPlans.regions) region.plan = {};
-  const std::string v2 = encodeProject(withoutPlans);
-  std::string out = v2.substr(0, 24);
-  test::putLeAt(out, 8, 1, 4);
-  for (auto [tag, payload] : chunksOf(v2)) {
-    if (tag == "REGN") {
-      std::uint32_t nameBytes = 0;
-      std::memcpy(&nameBytes, payload.data(), 4);  // little-endian host assumed by the test
+/// @p project with what format @p version could not store reset to the defaults: version 1
+/// regions have the default plan, version 1 and 2 tools the default sizes.
+planning::Project asReadFromVersion(planning::Project project, std::uint32_t version) {
+  if (version < 2)
+    for (planning::Region& region : project.regions) region.plan = {};
+  if (version < 3)
+    for (planning::Tool& tool : project.tools)
+      tool = {.name = tool.name,
+              .kind = tool.kind,
+              .radiusMm = tool.radiusMm,
+              .widthMm = tool.widthMm,
+              .segments = tool.segments};
+  return project;
+}
+
+/// The .ddfproj of @p project as format @p version (1 or 2) wrote it: "TOOL" payloads end
+/// after the segments, for version 1 "REGN" payloads end after the faces, the header gives
+/// the version. Built here from the documented layout.
+std::string asOldVersion(const planning::Project& project, std::uint32_t version) {
+  const std::string v3 = encodeProject(project);
+  std::string out = v3.substr(0, 24);
+  test::putLeAt(out, 8, version, 4);
+  for (auto [tag, payload] : chunksOf(v3)) {
+    std::uint32_t nameBytes = 0;
+    std::memcpy(&nameBytes, payload.data(), 4);  // little-endian host assumed by the test
+    if (tag == "REGN" && version < 2) {
       std::uint64_t faces = 0;
       std::memcpy(&faces, payload.data() + 4 + nameBytes + 12, 8);
       payload.resize(4 + nameBytes + 12 + 8 + 4 * faces);
+    }
+    if (tag == "TOOL") {
+      EXPECT_EQ(payload.size(), 4 + nameBytes + 4 + 8 + 8 + 4 + 7 * 8);
+      payload.resize(4 + nameBytes + 4 + 8 + 8 + 4);
     }
     out += tag;
     std::string length(8, '\0');
@@ -228,17 +246,33 @@ std::string asVersion1(const planning::Project& project) {
   return test::resized(std::move(out));
 }
 
-TEST(ProjectFile, Version1FilesLoadWithDefaultPlans) {
-  planning::Project project = test::makeRichProject();
+TEST(ProjectFile, OlderVersionsLoadWithDefaultPlansAndToolSizes) {
+  const planning::Project project = test::makeRichProject();
+  for (const std::uint32_t version : {1u, 2u}) {
+    ProjectReadReport report;
+    const planning::Project back =
+        decodeProject(asOldVersion(project, version), "old.ddfproj", &report);
+    EXPECT_EQ(report.formatVersion, version);
+    EXPECT_TRUE(report.skippedChunks.empty());
+    const planning::Project expected = asReadFromVersion(project, version);
+    expectSameProject(expected, back);
+    EXPECT_TRUE(planning::projectsEqual(expected, back));
+    EXPECT_EQ(back.tools[0].chordToleranceMm, 0.005);  // planning::Tool's documented default
+    EXPECT_EQ(back.tools[0].segments, 50);             // as stored
+    // Saving again writes version 3.
+    EXPECT_EQ(encodeProject(back).substr(8, 4), std::string("\x03\0\0\0", 4));
+  }
+}
+
+TEST(ProjectFile, ToolsOfEveryKindRoundTripWithAllSizes) {
+  planning::Project project = test::makeSmallProject();
+  project.tools = test::toolsOfEveryKind();
+  project.paths[0].tool = 5;
   ProjectReadReport report;
-  const planning::Project back = decodeProject(asVersion1(project), "old.ddfproj", &report);
-  EXPECT_EQ(report.formatVersion, 1u);
-  EXPECT_TRUE(report.skippedChunks.empty());
-  for (planning::Region& region : project.regions) region.plan = planning::RegionPlan{};
+  const planning::Project back = decodeProject(encodeProject(project), "kinds", &report);
+  EXPECT_EQ(report.formatVersion, 3u);
   expectSameProject(project, back);
   EXPECT_TRUE(planning::projectsEqual(project, back));
-  // Saving again writes version 2.
-  EXPECT_EQ(encodeProject(back).substr(8, 4), std::string("\x02\0\0\0", 4));
 }
 
 TEST(ProjectFile, CommittedVersion1FileStillLoads) {
@@ -299,7 +333,7 @@ TEST(ProjectFile, UnknownOptionalChunksAreSkippedAndReported) {
   const planning::Project back = decodeProject(withNotes, "later.ddfproj", &report);
   setLogSink(previous);
   expectSameProject(project, back);
-  EXPECT_EQ(report.formatVersion, 2u);
+  EXPECT_EQ(report.formatVersion, 3u);
   EXPECT_EQ(report.skippedChunks, (std::vector<std::string>{"later.ddfproj: chunk 4 ('note')",
                                                             "later.ddfproj: chunk 16 ('thmb')"}));
   ASSERT_EQ(logged.size(), 2u);
@@ -307,7 +341,7 @@ TEST(ProjectFile, UnknownOptionalChunksAreSkippedAndReported) {
   // The same chunk with an upper-case tag must be understood, so it is an error.
   EXPECT_THAT(test::ioErrorMessage(
                   [&] { decodeProject(withChunk(bytes, 3, "Note", "x"), "later.ddfproj"); }),
-              HasSubstr("chunk 4 ('Note'): unknown chunk type in format version 2"));
+              HasSubstr("chunk 4 ('Note'): unknown chunk type in format version 3"));
   // Optional or not, nothing may precede the project header.
   EXPECT_THAT(test::ioErrorMessage([&] { decodeProject(withChunk(bytes, 0, "note", ""), "x"); }),
               HasSubstr("the first chunk must be 'PROJ'"));

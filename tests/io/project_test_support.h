@@ -19,6 +19,7 @@
 #include <limits>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace ddfcam::test {
 
@@ -68,6 +69,65 @@ inline planning::Project makeSmallProject() {
   return project;
 }
 
+/// One valid tool of every kind, with names that need quoting and escaping and sizes that need
+/// every bit of a double.
+inline std::vector<planning::Tool> toolsOfEveryKind() {
+  using planning::ToolKind;
+  const double third = 1.0 / 3.0;
+  return {{.name = "roll \"fine\" \\ 1",
+           .kind = ToolKind::CylinderRoll,
+           .radiusMm = 25.0 + third,
+           .widthMm = 20.0,
+           .edgeRadiusMm = 1e-7,
+           .shankRadiusMm = 8.0,
+           .shankLengthMm = 15.0,
+           .holderRadiusMm = 18.0,
+           .holderLengthMm = 3.0,
+           .chordToleranceMm = 0.002,
+           .segments = 0},
+          {.name = "Kugel \u23006\nzwei\tZeilen",
+           .kind = ToolKind::Sphere,
+           .radiusMm = third,
+           .widthMm = -0.0,
+           .segments = 32},
+          {.name = "",
+           .kind = ToolKind::BeltContactWheel,
+           .radiusMm = 50.0,
+           .widthMm = 25.0,
+           .edgeRadiusMm = 2.0,
+           .crownRadiusMm = 200.0 + third,
+           .shankRadiusMm = 10.0,
+           .shankLengthMm = 20.0,
+           .holderRadiusMm = 30.0,
+           .holderLengthMm = 4.0,
+           .chordToleranceMm = 1e-3 / 3.0,
+           .segments = 0},
+          {.name = "ball # not a comment",
+           .kind = ToolKind::BallEnd,
+           .radiusMm = 3.0,
+           .widthMm = 12.0,
+           .shankRadiusMm = 3.0,
+           .shankLengthMm = 30.0,
+           .holderRadiusMm = 12.0,
+           .holderLengthMm = 40.0,
+           .segments = 64},
+          {.name = "flat",
+           .kind = ToolKind::FlatEnd,
+           .radiusMm = 5.0,
+           .widthMm = 22.0,
+           .shankLengthMm = 1e-300,
+           .chordToleranceMm = 0.01,
+           .segments = 3},
+          {.name = "torus",
+           .kind = ToolKind::TorusCutter,
+           .radiusMm = 6.0,
+           .widthMm = 18.0,
+           .edgeRadiusMm = 2.0 - 1e-15,
+           .holderRadiusMm = 16.0,
+           .holderLengthMm = 45.0,
+           .segments = 4096}};
+}
+
 /// Every kind of item, with unicode names, NaN values, signed zeros and odd doubles; one region
 /// with a plan that differs from the default in every member, one with the default plan.
 inline planning::Project makeRichProject() {
@@ -111,8 +171,24 @@ inline planning::Project makeRichProject() {
   planning::Region defaults{"Boden", {0, 2}, {0.5f, 0.5f, 0.5f}, {}};
   project.regions.push_back(defaults);
 
-  project.tools.push_back({"Walze R5 W10", planning::ToolKind::CylinderRoll, 5.0, 10.0, 50});
-  project.tools.push_back({"Kugel \u23006", planning::ToolKind::Sphere, 3.0, 1.25, 32});
+  // Sizes added in format 3 with values that need every bit (1/3) or differ from the defaults.
+  project.tools.push_back({.name = "Walze R5 W10",
+                           .kind = planning::ToolKind::CylinderRoll,
+                           .radiusMm = 5.0,
+                           .widthMm = 10.0,
+                           .edgeRadiusMm = 0.5,
+                           .crownRadiusMm = 40.0,
+                           .shankRadiusMm = 2.0,
+                           .shankLengthMm = 1.0 / 3.0,
+                           .holderRadiusMm = 4.0,
+                           .holderLengthMm = 1.5,
+                           .chordToleranceMm = 0.001,
+                           .segments = 50});
+  project.tools.push_back({.name = "Kugel \u23006",
+                           .kind = planning::ToolKind::Sphere,
+                           .radiusMm = 3.0,
+                           .widthMm = 1.25,
+                           .segments = 32});
 
   planning::ToolPath path;
   path.name = "Bahn 1 \u2192 Rand";

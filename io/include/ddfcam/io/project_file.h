@@ -12,12 +12,13 @@
 
 namespace ddfcam::io {
 
-/// @brief Project format version this build writes and the newest it reads (it reads 1 too).
-inline constexpr std::uint32_t kProjectFormatVersion = 2;
+/// @brief Project format version this build writes and the newest it reads (it reads 1 and 2
+/// too).
+inline constexpr std::uint32_t kProjectFormatVersion = 3;
 
 /// @brief What decodeProject found besides the project itself.
 struct ProjectReadReport {
-  /// Format version of the file read (1 or 2; default 0 before a read).
+  /// Format version of the file read (1, 2 or 3; default 0 before a read).
   std::uint32_t formatVersion = 0;
   /// Optional chunks this build does not know and skipped, as "<source>: chunk 5 ('note')",
   /// in file order (default empty). Their content is not loaded and is not saved again.
@@ -48,7 +49,7 @@ struct ProjectReadReport {
 /// payload of an existing tag, or a chunk that changes the meaning of others) takes an
 /// upper-case tag and a version bump. Any other unknown tag is an error.
 ///
-/// Chunks of version 2 (all upper-case, so none is optional). "PROJ" comes first; the others may
+/// Chunks of version 3 (all upper-case, so none is optional). "PROJ" comes first; the others may
 /// follow in any order (encodeProject writes them in the order of this table), and the order of
 /// the chunks with one tag is the order of the project's vector:
 /// | tag | count | payload |
@@ -56,7 +57,7 @@ struct ProjectReadReport {
 /// | "PROJ" | 1 | string partName, string sourcePath |
 /// | "PART" | 0..1 | the part: its complete .ddf encoding (encodeDdf, ddf_file.h) |
 /// | "DSGN" | 0..1 | design mesh: u64 V, u64 T, V x 3 f64 (mm), T x 3 i32 vertex indices |
-/// | "TOOL" | per tool | string name, i32 kind, f64 radiusMm, f64 widthMm, i32 segments |
+/// | "TOOL" | per tool | string name, i32 kind, f64 radiusMm, f64 widthMm, i32 segments, sizes |
 /// | "PATH" | per path | string name, i32 tool, f64 feed, u64 P, P poses, u64 S, S i32 |
 /// | "FELD" | per field | string name, string unit, u8 isSigned 0/1, u64 N, N f32 values |
 /// | "REGN" | per region | string name, 3 f32 colour RGB, u64 N, N i32 support faces, plan |
@@ -66,13 +67,19 @@ struct ProjectReadReport {
 /// The S i32 of a path are its passStarts, the feed is feedMmPerMin (mm/min), kind is the
 /// ToolKind value.
 ///
+/// The sizes of a tool (from version 3 on) are 7 f64 (mm): edgeRadiusMm, crownRadiusMm,
+/// shankRadiusMm, shankLengthMm, holderRadiusMm, holderLengthMm, chordToleranceMm.
+///
 /// The plan of a region (planning::RegionPlan, from version 2 on) is: i32 tool, i32 flowSource,
 /// 3 f64 fixedDirection, u8 smoothField 0/1, f64 smoothnessWeight, i32 spacingMode, f64
 /// spacingMm, f64 scallopToleranceMm, i32 feedSign, i32 linking, u64 S strokes, then per stroke
 /// u64 P and P x 3 f64 points (mm). Enums are stored as their values.
 ///
-/// Version 1 differs only in "REGN": its payload ends after the faces. A version-1 file loads
-/// with the default RegionPlan on every region; saving writes version 2.
+/// Version 2 differs only in "TOOL": its payload ends after the segments (tools were bare rolls
+/// and balls); a version-2 file loads with the later fields at planning::Tool's defaults (0,
+/// chord tolerance 0.005 mm) and the stored segment count. Version 1 differs from version 2
+/// also in "REGN": its payload ends after the faces, and its regions load with the default
+/// RegionPlan. Saving always writes version 3.
 ///
 /// A pose is 19 f64: the 4 x 4 matrix of PathPose::pose in column-major order (bottom row
 /// included, so the stored matrix is exactly the one in memory), then the contact x y z (mm).
@@ -84,7 +91,7 @@ std::string encodeProject(const planning::Project& project);
 
 /// @brief Rebuilds a project from .ddfproj content; the exact inverse of encodeProject
 /// (planning::projectsEqual holds between the original and the decoded project).
-/// Reads format versions 1 and 2; skips unknown optional chunks (see encodeProject).
+/// Reads format versions 1, 2 and 3; skips unknown optional chunks (see encodeProject).
 /// @param bytes whole file content. @param sourceName file name used in messages.
 /// @param report if not null, receives the file's version and the skipped optional chunks.
 /// @throws IoError naming @p sourceName and the problem if the content is empty, truncated

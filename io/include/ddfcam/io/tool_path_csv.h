@@ -60,10 +60,13 @@ ToolPathCsv toolPathCsvRows(const planning::ToolPath& path, CsvPointKind kind,
 /// the last pose of the preceding Cut (the tool keeps that orientation while it travels); their
 /// feed is the path's feed for Link and 0 for Rapid.
 /// @param path poses, one pass per input path of linkPaths (same indices).
+/// @param normals #poses unit normals (tool side) of @p path, or empty: then derived as in
+/// toolPathCsvRows() (needed for cutters, whose tip may be the contact).
 /// @throws InvalidInput if a Cut refers to a missing pass, its points do not match the pass's
-/// contacts (count or value), or the first move is not a Cut.
+/// contacts (count or value), the first move is not a Cut, or @p normals has another size.
 ToolPathCsv linkedToolPathCsvRows(const planning::LinkedPaths& linked,
-                                  const planning::ToolPath& path, CsvPointKind kind);
+                                  const planning::ToolPath& path, CsvPointKind kind,
+                                  const std::vector<ddf::Vec3>& normals = {});
 
 /// @brief The header line (without line end) for @p kind:
 /// "path,point,P_x_mm,P_y_mm,P_z_mm,axis_i,axis_j,axis_k,normal_x,normal_y,normal_z,
