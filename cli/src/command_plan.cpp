@@ -15,6 +15,7 @@
 #include "commands.h"
 #include "console.h"
 #include "plan_lines.h"
+#include "plan_tool.h"
 
 #include <algorithm>
 #include <array>
@@ -56,8 +57,19 @@ constexpr const char* kHelp =
     "                           long stay on the surface, longer ones lift by 1 mm (by the\n"
     "                           bounding-box diagonal / 20 on smaller parts)\n"
     "  --point contact|reference  x y z columns: contact point or tool centre (default contact)\n"
-    "  --tool roll|ball         tool shape (default roll, width 2 radius)\n"
+    "  --tool KIND              tool shape: roll, ball (bare sphere), ball_end, flat_end, torus,\n"
+    "                           belt_wheel (or a tool-library key such as torus_cutter)\n"
+    "                           (default roll); wheels are 2 radius wide, cutters' flutes 2\n"
+    "                           radius long\n"
     "  --radius MM              tool radius (default 5)\n"
+    "  --corner-radius MM       corner radius of torus (default radius / 4) or rim radius of\n"
+    "                           roll and belt_wheel (default 0)\n"
+    "  --lead DEG, --tilt DEG   lead angle (axis towards the feed) and tilt angle (about the\n"
+    "                           feed), |angle| < 90 (default 0; negative: --lead=-5)\n"
+    "  --tolerance MM           resample the lines along the feed at the step that keeps the\n"
+    "                           feed chord error and the cusp between poses below MM (bounded\n"
+    "                           by the raster spacing) (default: a pose at every line point)\n"
+    "  --step MM                resample at this fixed step instead (overrides the tolerance)\n"
     "  --feed MM_PER_MIN        feed rate (default 1000)\n"
     "  --decimals N             digits after the decimal point in the CSV (default 6)\n"
     "  -h, --help               show this help\n";
@@ -81,7 +93,7 @@ struct PlanOptions {
   bool fair = false;
   planning::LinkingOrder linking = planning::LinkingOrder::ZigZag;
   io::CsvPointKind point = io::CsvPointKind::Contact;
-  planning::Tool tool;
+  PlanTool tool;  ///< tool, placement and sampling along the lines
   double feedMmPerMin = 1000.0;
   int decimals = 6;
 };
@@ -159,13 +171,7 @@ void parseOutput(const Arguments& args, PlanOptions& o) {
   static constexpr std::array<const char*, 2> kPoints = {"contact", "reference"};
   o.point = choice(args, "point", kPoints, 0) == 0 ? io::CsvPointKind::Contact
                                                    : io::CsvPointKind::ToolReference;
-  static constexpr std::array<const char*, 2> kTools = {"roll", "ball"};
-  const bool ball = choice(args, "tool", kTools, 0) == 1;
-  const double radius = args.positiveNumber("radius").value_or(5.0);
-  char name[64];
-  std::snprintf(name, sizeof name, "%s R%g", ball ? "ball" : "roll", radius);
-  o.tool = {name, ball ? planning::ToolKind::Sphere : planning::ToolKind::CylinderRoll, radius,
-            2.0 * radius, 48};
+  o.tool = parsePlanTool(args);
   o.feedMmPerMin = args.positiveNumber("feed").value_or(1000.0);
   o.decimals = args.integer("decimals", 6, 0, 17);
 }
@@ -173,7 +179,7 @@ void parseOutput(const Arguments& args, PlanOptions& o) {
 void checkScallop(const PlanOptions& o) {
   if (!o.scallopMm) return;
   if (o.spacingMm) throw UsageError("--scallop and --spacing exclude each other");
-  const std::optional<double> radius = planning::effectiveCrossFeedRadiusMm(o.tool);
+  const std::optional<double> radius = planning::effectiveCrossFeedRadiusMm(o.tool.tool);
   if (!radius)
     throw UsageError(
         "--scallop needs --tool ball: a straight roll has a flat profile across the "
@@ -186,15 +192,18 @@ void checkScallop(const PlanOptions& o) {
 }
 
 PlanOptions parseOptions(std::span<const std::string> words) {
-  static const std::array<OptionSpec, 16> kSpecs = {
-      OptionSpec{"output", 'o', true},     OptionSpec{"field", '\0', true},
-      OptionSpec{"direction", '\0', true}, OptionSpec{"no-smooth", '\0', false},
-      OptionSpec{"method", '\0', true},    OptionSpec{"seeding", '\0', true},
-      OptionSpec{"spacing", '\0', true},   OptionSpec{"smooth-window", '\0', true},
-      OptionSpec{"fair", '\0', false},     OptionSpec{"linking", '\0', true},
-      OptionSpec{"point", '\0', true},     OptionSpec{"tool", '\0', true},
-      OptionSpec{"radius", '\0', true},    OptionSpec{"feed", '\0', true},
-      OptionSpec{"decimals", '\0', true},  OptionSpec{"scallop", '\0', true}};
+  static const std::array<OptionSpec, 21> kSpecs = {
+      OptionSpec{"output", 'o', true},         OptionSpec{"field", '\0', true},
+      OptionSpec{"direction", '\0', true},     OptionSpec{"no-smooth", '\0', false},
+      OptionSpec{"method", '\0', true},        OptionSpec{"seeding", '\0', true},
+      OptionSpec{"spacing", '\0', true},       OptionSpec{"smooth-window", '\0', true},
+      OptionSpec{"fair", '\0', false},         OptionSpec{"linking", '\0', true},
+      OptionSpec{"point", '\0', true},         OptionSpec{"tool", '\0', true},
+      OptionSpec{"radius", '\0', true},        OptionSpec{"feed", '\0', true},
+      OptionSpec{"decimals", '\0', true},      OptionSpec{"scallop", '\0', true},
+      OptionSpec{"corner-radius", '\0', true}, OptionSpec{"lead", '\0', true},
+      OptionSpec{"tilt", '\0', true},          OptionSpec{"tolerance", '\0', true},
+      OptionSpec{"step", '\0', true}};
   const Arguments args(words, kSpecs, "plan");
   args.expectPositionals(1, "an input part (.ddf, mesh or 'demo')");
   PlanOptions o;
@@ -237,10 +246,10 @@ LineSpacing chooseSpacing(const ddf::DisplacementField& part,
     return {fixed, fixed, 0.0, {}};
   }
   std::vector<float> spacing =
-      planning::scallopSpacingField(part, curvature, field, o.tool.radiusMm, *o.scallopMm);
+      planning::scallopSpacingField(part, curvature, field, o.tool.tool.radiusMm, *o.scallopMm);
   const std::optional<double> smallest = planning::smallestFiniteSpacing(spacing);
   if (!smallest)
-    throw InvalidInput("plan: the ball of radius " + std::to_string(o.tool.radiusMm) +
+    throw InvalidInput("plan: the ball of radius " + std::to_string(o.tool.tool.radiusMm) +
                        " mm gouges every concave point of the part; no scallop spacing exists");
   double largest = *smallest;
   const auto gouging = std::count_if(spacing.begin(), spacing.end(), [&](float s) {
@@ -301,6 +310,21 @@ void printSummary(const PlanOptions& o, const planning::LinkedPaths& linked, std
       t.load, t.curvature, t.field, t.lines, t.paths);
 }
 
+/// The sampling step range and the rules that bound it, when the lines were resampled.
+void printSampling(const PlacedProgram& program) {
+  if (program.passes.empty()) return;
+  double lo = 1e300, hi = 0;
+  std::string rules;
+  for (const planning::PassSampling& pass : program.passes) {
+    lo = std::min(lo, pass.step.stepMm);
+    hi = std::max(hi, pass.step.stepMm);
+    const std::string rule = planning::stepRuleName(pass.bindingRule);
+    if (rules.find(rule) == std::string::npos) rules += (rules.empty() ? "" : ", ") + rule;
+  }
+  std::printf("  sampling: %zu poses, step %.6g to %.6g mm (%s)\n", program.path.poses.size(), lo,
+              hi, rules.c_str());
+}
+
 int runPlan(std::span<const std::string> words) {
   PlanOptions o = parseOptions(words);
   StageTimes t;
@@ -333,22 +357,21 @@ int runPlan(std::span<const std::string> words) {
   t.lines = msSince(start);
   if (lines.empty()) throw InvalidInput("plan: no line with two points could be traced");
   start = Clock::now();
-  planning::StreamlinePathParams pathParams;
-  pathParams.feedMmPerMin = o.feedMmPerMin;
-  const planning::ToolPath path =
-      planning::toolPathFromStreamlines(part, lines, o.tool, 0, pathParams);
   planning::LinkingParams linking;
   linking.order = o.linking;
   // Concave areas barely wider than a ball allow huge spacings; links that long lift instead.
   const double linkSpacing =
-      o.scallopMm ? std::min(spacing.maxMm, 2.0 * o.tool.radiusMm) : spacing.maxMm;
+      o.scallopMm ? std::min(spacing.maxMm, 2.0 * o.tool.tool.radiusMm) : spacing.maxMm;
   linking.directLinkMaxMm = 2.0 * linkSpacing;
   linking.clearanceMm = std::min(1.0, diagonal / 20.0);  // parts in metres are tiny in mm
-  const planning::LinkedPaths linked = planning::linkStreamlines(part, lines, linking);
-  const io::ToolPathCsv table = io::linkedToolPathCsvRows(linked, path, o.point);
+  const PlacedProgram program = placeAndLink(part, lines, o.tool, o.feedMmPerMin, linking);
+  const planning::LinkedPaths& linked = program.linked;
+  const io::ToolPathCsv table =
+      io::linkedToolPathCsvRows(linked, program.path, o.point, program.normals);
   io::writeToolPathCsv(table, o.output, {.decimals = o.decimals});
   t.paths = msSince(start);
   printSummary(o, linked, table.rows.size(), spacing, t);
+  printSampling(program);
   return 0;
 }
 

@@ -22,5 +22,6 @@ extern const Command kInfoCommand;
 extern const Command kDemoCommand;
 extern const Command kCurvatureCommand;  // section C
 extern const Command kPlanCommand;       // section L
+extern const Command kSimulateCommand;   // section BV
 
 }  // namespace ddfcam::cli

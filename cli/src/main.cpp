@@ -15,9 +15,10 @@ namespace {
 
 using ddfcam::cli::Command;
 
-constexpr std::array<const Command*, 6> kCommands = {
+constexpr std::array<const Command*, 7> kCommands = {
     &ddfcam::cli::kConvertCommand, &ddfcam::cli::kExtractCommand,   &ddfcam::cli::kInfoCommand,
-    &ddfcam::cli::kDemoCommand,    &ddfcam::cli::kCurvatureCommand, &ddfcam::cli::kPlanCommand};
+    &ddfcam::cli::kDemoCommand,    &ddfcam::cli::kCurvatureCommand, &ddfcam::cli::kPlanCommand,
+    &ddfcam::cli::kSimulateCommand};
 
 void printUsage(std::FILE* out) {
   std::fprintf(out,

@@ -166,6 +166,83 @@ TEST(CliPlan, UnavailableCombinationsAreRefused) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+/// Plans straight lines along x on a 40 x 30 mm plane (5 mm cells, m = 9) with a ball-end
+/// cutter of radius 3 at lead 10 deg and tolerance @p toleranceMm; checks the pose spacing of
+/// every cut against @p stepMm and the tool axis and normal columns.
+void checkBallEndSpacing(double toleranceMm, double stepMm) {
+  test::ScratchDir dir;
+  writeDdf(ddf::planePatch({.cellsX = 8, .cellsY = 6, .m = 9}).ddf, dir / "plane.ddf");
+  const PlanRun run = plan(dir, {(dir / "plane.ddf").string(),
+                                 "-o",
+                                 (dir / "p.csv").string(),
+                                 "--field",
+                                 "fixed",
+                                 "--direction",
+                                 "1,0,0",
+                                 "--no-smooth",
+                                 "--seeding",
+                                 "transverse",
+                                 "--spacing",
+                                 "5",
+                                 "--tool",
+                                 "ball_end",
+                                 "--radius",
+                                 "3",
+                                 "--lead",
+                                 "10",
+                                 "--tolerance",
+                                 std::to_string(toleranceMm),
+                                 "--decimals",
+                                 "9"});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("sampling:"));
+  const auto cuts = cutsOf(readToolPathCsv(dir / "p.csv"));
+  ASSERT_GE(cuts.size(), 5u);
+  const double lead = 10.0 * std::numbers::pi / 180.0;
+  for (const auto& [move, rows] : cuts) {
+    const double length = (rows.back().position - rows.front().position).norm();
+    ASSERT_GT(length, 39.0) << "move " << move;  // the line crosses the whole plane
+    const int k = static_cast<int>(std::ceil(length / stepMm - 1e-6));
+    ASSERT_EQ(static_cast<int>(rows.size()), k + 1) << "move " << move;
+    for (std::size_t i = 1; i < rows.size(); ++i)
+      EXPECT_NEAR((rows[i].position - rows[i - 1].position).norm(), length / k, 1e-6);
+    for (const ToolPathCsvRow& r : rows) {
+      EXPECT_LT((r.normal - ddf::Vec3::UnitZ()).norm(), 1e-9);
+      EXPECT_NEAR(std::abs(r.toolAxis.x()), std::sin(lead), 1e-6);  // leans towards the feed
+      EXPECT_NEAR(r.toolAxis.z(), std::cos(lead), 1e-6);
+    }
+  }
+}
+
+TEST(CliPlan, BallEndToleranceSetsTheSagittaStep) {
+  // Cusp between two balls on a plane: 2 sqrt(2 R T - T^2) = 0.1549 mm for R = 3, T = 0.001,
+  // below the raster spacing, so this rule binds.
+  checkBallEndSpacing(0.001, 2.0 * std::sqrt(2.0 * 3.0 * 0.001 - 0.001 * 0.001));
+}
+
+TEST(CliPlan, BallEndCoarseToleranceIsBoundByTheRasterSpacing) {
+  // T = 0.1: the sagitta step (1.536 mm) exceeds the raster spacing, the mean edge of a
+  // 5 x 5 mm half cell over m - 1 = 8: (5 + 5 + 5 sqrt 2) / 3 / 8 = 0.7113 mm.
+  checkBallEndSpacing(0.1, (10.0 + 5.0 * std::sqrt(2.0)) / 3.0 / 8.0);
+}
+
+TEST(CliPlan, UnknownToolKindsAndBadAnglesAreRefused) {
+  test::ScratchDir dir;
+  const std::string out = (dir / "p.csv").string();
+  PlanRun run = plan(dir, {"demo", "-o", out, "--tool", "cone"});
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_THAT(run.err, HasSubstr("--tool cone: expected roll|ball|ball_end|flat_end|torus"));
+  run = plan(dir, {"demo", "-o", out, "--tool", "ball_end", "--lead", "95"});
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_THAT(run.err, HasSubstr("--lead must lie within (-90, 90)"));
+  run = plan(dir, {"demo", "-o", out, "--tool", "torus", "--radius", "2", "--corner-radius", "3"});
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_THAT(run.err, HasSubstr("--corner-radius"));
+  run = plan(dir, {"demo", "-o", out, "--tool", "ball_end", "--corner-radius", "1"});
+  EXPECT_THAT(run.err, HasSubstr("--corner-radius needs --tool torus"));
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 TEST(CliPlan, ScallopHeightSetsTheSpacingFromTheCrossFeedCurvature) {
   test::ScratchDir dir;
   ddf::CylinderParams params;

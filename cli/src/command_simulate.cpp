@@ -1,0 +1,378 @@
+// SPDX-License-Identifier: MIT
+// ddfcam-cli simulate: grinds a tool-path CSV into a part, writes the result, an error map and
+// a JSON report of the deviation statistics (dissertation sec. 8.4).
+#include <ddfcam/ddf/analytic_generators.h>
+#include <ddfcam/ddf/raster_mesh.h>
+#include <ddfcam/error.h>
+#include <ddfcam/io/ddf_file.h>
+#include <ddfcam/io/mesh_io.h>
+#include <ddfcam/io/part_loader.h>
+#include <ddfcam/io/project_file.h>
+#include <ddfcam/io/tool_path_csv.h>
+#include <ddfcam/io/vtp_writer.h>
+#include <ddfcam/planning/error_map.h>
+#include <ddfcam/planning/grinding_simulation.h>
+#include <ddfcam/planning/penetration_correction.h>
+#include <ddfcam/planning/preston_removal.h>
+#include <ddfcam/planning/workpiece.h>
+
+#include "arguments.h"
+#include "commands.h"
+#include "console.h"
+#include "json_writer.h"
+#include "simulate_inputs.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+
+namespace ddfcam::cli {
+namespace {
+
+constexpr const char* kHelp =
+    "usage: ddfcam-cli simulate PART --paths PATHS.csv -o OUT.ddf [options]\n\n"
+    "Grinds the cut moves of a tool-path CSV (as written by 'ddfcam-cli plan') into PART (a .ddf\n"
+    "file, a .stl/.obj/.ply/.off mesh converted with heights 0 as 'plan' does, a .ddfproj\n"
+    "project's part, or 'demo'). PART's heights are the desired surface; the workpiece is that\n"
+    "surface raised by the allowance along its normal, or a stock mesh. The tool is placed at\n"
+    "every contact point (x y z, or the tool reference point minus the tool's reference offset\n"
+    "for 'tool' CSVs) with the CSV's normal, wheels with the planned axis, touching the\n"
+    "surface; every pose is cut by the DDF depth buffer (or by Preston removal). Writes the\n"
+    "simulated part, optionally the signed deviation from the desired surface (mm along its\n"
+    "normal; > 0 material left, < 0 overcut) as a .vtp error map and the statistics as JSON,\n"
+    "and prints a summary.\n\n"
+    "options:\n"
+    "  --paths FILE             tool-path CSV (required); link and rapid rows are not cut\n"
+    "  -o, --output FILE        simulated part as .ddf (required)\n"
+    "  --error-map FILE         deviation per raster point as VTK PolyData (.vtp)\n"
+    "  --report FILE            statistics as JSON\n"
+    "tool:\n"
+    "  --tool KIND              roll (= cylinder_roll, default), ball (bare sphere = sphere),\n"
+    "                           cylinder_roll, sphere, belt_contact_wheel, ball_end, flat_end,\n"
+    "                           torus_cutter\n"
+    "  --radius MM              tool radius (default 5)\n"
+    "  --width MM               wheel width or cutter flute length (default 2 x radius; not\n"
+    "                           for ball)\n"
+    "  --corner-radius MM       wheel rim radius, or torus_cutter corner radius (required there)\n"
+    "  --tool-file FILE --tool-name NAME\n"
+    "                           take the tool NAME from a tool library file instead of --tool,\n"
+    "                           --radius, --width, --corner-radius\n"
+    "  --lead DEG, --tilt DEG   lead and tilt angles of the tool at the contact (default 0)\n"
+    "sampling along the feed (default: one pose per CSV row):\n"
+    "  --sample-tolerance MM    resample every pass at the step derived from this tolerance\n"
+    "                           (feed chord, raster spacing, tool profile cusp; default rule\n"
+    "                           tolerance = --tolerance when only --step is given)\n"
+    "  --step MM                resample every pass at this fixed step instead\n"
+    "workpiece and process:\n"
+    "  --allowance MM           stock above the desired surface along its normal (default 0:\n"
+    "                           the workpiece is the desired surface, so only gouges show)\n"
+    "  --stock-mesh FILE        workpiece from a stock mesh (.stl/.obj/.ply/.off) converted onto\n"
+    "                           PART's support instead of --allowance\n"
+    "  --swept                  cut the swept volume between consecutive poses (convex tools)\n"
+    "  --correct                lift every pose off the desired surface until it no longer\n"
+    "                           penetrates it (tangential DDF, sec. 8.4.2) before cutting\n"
+    "  --correct-every K        exact lift at every K-th pose, interpolated between (default 1)\n"
+    "  --correct-grid N         tangential grid N x N (default 50)\n"
+    "  --preston                Preston removal (depth = K_p p v_s dt) instead of the rigid cut\n"
+    "  --kp MM2_PER_N           Preston coefficient K_p, mm^2/N (default 1e-7)\n"
+    "  --force N                normal force, N (default 10)\n"
+    "  --wheel-speed M_PER_S    wheel surface speed, m/s (default 30)\n"
+    "  --feed MM_PER_MIN        feed (default: the CSV's feed)\n"
+    "  --infeed MM              infeed of the undeformed tool setting the contact patch (0.1)\n"
+    "  --tolerance MM           tolerance band [-T, T] of the statistics (default 0.01)\n"
+    "  --no-vconvexity-check    skip the check for cuts that are not V-convex (fig. 8.15);\n"
+    "                           the check probes every stubble under the tool at every pose\n"
+    "  -h, --help               show this help\n";
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+ddf::DisplacementField loadInput(const std::filesystem::path& input) {
+  if (input == "demo") return ddf::demoPart().ddf;
+  if (input.extension() == ".ddfproj") {
+    planning::Project project = io::readProject(input);
+    if (!project.part) throw InvalidInput("simulate: project " + input.string() + " has no part");
+    return std::move(*project.part);
+  }
+  io::LoadPartParams load;
+  load.progress = consoleProgress("loading");
+  ddf::DisplacementField part = io::loadPart(input, load);
+  endProgressLine();
+  return part;
+}
+
+/// The simulated surface along its raster lattice with the deviation of each point's copy in
+/// the lowest-index face (the copy whose position the mesh vertex takes).
+ddf::TriangleMesh errorMapMesh(const ddf::DisplacementField& produced,
+                               const planning::ScalarField& deviation,
+                               const planning::ToleranceBand& band, io::VtpPointData& data) {
+  ddf::RasterMesh raster = ddf::extractRasterMesh(produced);
+  const std::size_t perFace = produced.pointsPerFace();
+  std::vector<float> values, classes;
+  values.reserve(raster.vertexPoint.size());
+  for (const ddf::PointId p : raster.vertexPoint) {
+    int face = produced.faceCount();
+    float value = std::numeric_limits<float>::quiet_NaN();
+    produced.topology().forEachCopy(p, [&](ddf::PointCopy c) {
+      if (c.face >= face) return;
+      face = c.face;
+      value = deviation.values[static_cast<std::size_t>(c.face) * perFace + c.local];
+    });
+    values.push_back(value);
+    const auto cls = planning::classify(value, band);
+    classes.push_back(std::isnan(value)                               ? value
+                      : cls == planning::ToleranceClass::Overcut      ? -1.0f
+                      : cls == planning::ToleranceClass::MaterialLeft ? 1.0f
+                                                                      : 0.0f);
+  }
+  data.scalars.push_back({"deviation_mm", std::move(values)});
+  data.scalars.push_back({"tolerance_class", std::move(classes)});
+  return std::move(raster.mesh);
+}
+
+struct SimulationResult {
+  planning::GrindingReport grinding;
+  std::optional<planning::PenetrationCorrectionReport> correction;
+  std::optional<planning::PrestonReport> preston;
+  std::vector<planning::PassSampling> sampling;
+  planning::ErrorStatistics stats;
+  int passes = 0, poses = 0;
+  double removedVolumeMm3 = 0, prestonFeedMmPerMin = 0;
+  double loadSeconds = 0, correctSeconds = 0, simulateSeconds = 0, totalSeconds = 0;
+};
+
+void writeText(const std::string& text, const std::filesystem::path& file) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.close();
+  if (!out) throw IoError("simulate: cannot write " + file.string());
+}
+
+void writeTool(JsonWriter& json, const SimulateOptions& o) {
+  json.key("tool").beginObject();
+  json.key("name").value(o.tool.name).key("kind").value(o.toolKind);
+  json.key("source").value(o.toolSource);
+  json.key("radius_mm").value(o.tool.radiusMm);
+  if (o.tool.kind != planning::ToolKind::Sphere) json.key("width_mm").value(o.tool.widthMm);
+  json.key("edge_radius_mm").value(o.tool.edgeRadiusMm);
+  json.key("lead_deg").value(o.placement.leadDeg).key("tilt_deg").value(o.placement.tiltDeg);
+  json.endObject();
+}
+
+// The smallest step over the passes and the rule that bound it, plus every pass.
+void writeSampling(JsonWriter& json, const SimulateOptions& o, const SimulationResult& r) {
+  if (!o.resample()) {
+    json.key("sampling").null();
+    return;
+  }
+  const auto finest =
+      std::min_element(r.sampling.begin(), r.sampling.end(),
+                       [](const auto& a, const auto& b) { return a.step.stepMm < b.step.stepMm; });
+  json.key("sampling").beginObject();
+  json.key("sample_tolerance_mm").value(o.sampleToleranceMm.value_or(o.toleranceMm));
+  json.key("sample_step_mm").value(finest->step.stepMm);
+  json.key("sample_rule").value(planning::stepRuleName(finest->bindingRule));
+  json.key("per_pass").beginArray();
+  for (const planning::PassSampling& pass : r.sampling) {
+    json.beginObject().key("step_mm").value(pass.step.stepMm);
+    json.key("rule").value(planning::stepRuleName(pass.bindingRule));
+    json.key("length_mm").value(pass.lengthMm);
+    json.key("inserted_poses").value(pass.sweepInsertedPoses).endObject();
+  }
+  json.endArray().endObject();
+}
+
+void writeProcess(JsonWriter& json, const SimulateOptions& o, const SimulationResult& r) {
+  json.key("mode").value(o.preston.enabled ? "preston" : o.swept ? "swept" : "discrete");
+  if (const auto& c = r.correction) {
+    json.key("correction").beginObject();
+    json.key("poses_lifted").value(c->penetratingPoses).key("max_lift_mm").value(c->maxLiftMm);
+    json.key("exact_poses").value(c->exactPoses);
+    json.key("corrected_after_check").value(c->correctedAfterCheck);
+    json.key("max_residual_mm").value(c->maxResidualMm);
+    json.key("ms").value(1e3 * r.correctSeconds).endObject();
+  } else {
+    json.key("correction").null();
+  }
+  if (const auto& p = r.preston) {
+    double deepest = 0.0;
+    for (double d : p->maxDepthMm) deepest = std::max(deepest, d);
+    json.key("preston").beginObject();
+    json.key("kp_mm2_per_n").value(o.preston.kpMm2PerN).key("force_n").value(o.preston.forceN);
+    json.key("wheel_speed_m_per_s").value(o.preston.wheelSpeedMPerS);
+    json.key("feed_mm_per_min").value(r.prestonFeedMmPerMin);
+    json.key("infeed_mm").value(o.preston.infeedMm);
+    json.key("max_removal_depth_mm").value(deepest);
+    json.key("poses_without_contact").value(p->posesWithoutContact).endObject();
+  } else {
+    json.key("preston").null();
+  }
+}
+
+void writeReport(const SimulateOptions& o, const SimulationResult& r) {
+  JsonWriter json;
+  json.beginObject();
+  json.key("part").value(o.input.string()).key("paths").value(o.paths.string());
+  writeTool(json, o);
+  if (o.stockMesh)
+    json.key("stock_mesh").value(o.stockMesh->string());
+  else
+    json.key("allowance_mm").value(o.allowanceMm);
+  json.key("tolerance_mm").value(o.toleranceMm);
+  json.key("poses").value(r.poses).key("passes").value(r.passes);
+  writeSampling(json, o, r);
+  writeProcess(json, o, r);
+  const planning::ErrorStatistics& s = r.stats;
+  json.key("deviation").beginObject();
+  json.key("max_mm").value(s.maxMm).key("min_mm").value(s.minMm);
+  json.key("mean_mm").value(s.meanMm).key("rms_mm").value(s.rmsMm);
+  json.key("in_tolerance_percent").value(s.inTolerancePercent);
+  json.key("material_left_percent").value(s.materialLeftPercent);
+  json.key("overcut_percent").value(s.overcutPercent);
+  json.key("area_mm2").value(s.areaMm2).key("points").value(s.points);
+  json.endObject();
+  json.key("removed_volume_mm3").value(r.removedVolumeMm3);
+  const bool rigid = !o.preston.enabled;
+  if (rigid && o.checkVConvexity)
+    json.key("v_convexity_poses").value(r.grinding.vConvexity.size());
+  else
+    json.key("v_convexity_poses").null();
+  if (rigid) {
+    json.key("heights_lowered").value(r.grinding.pointsLowered);
+    json.key("collision_poses").value(r.grinding.collisions.size());
+  } else {
+    json.key("heights_lowered").null().key("collision_poses").null();
+  }
+  json.key("seconds").beginObject();
+  json.key("load").value(r.loadSeconds).key("correct").value(r.correctSeconds);
+  json.key("simulate").value(r.simulateSeconds);
+  json.key("total").value(r.totalSeconds).endObject();
+  json.endObject();
+  writeText(json.str(), *o.report);
+}
+
+void printSummary(const SimulateOptions& o, const SimulationResult& r) {
+  const planning::ErrorStatistics& s = r.stats;
+  if (!r.sampling.empty()) {
+    const auto& first = r.sampling.front();
+    std::printf("  sampling: step %.4g mm (%s) on the first pass\n", first.step.stepMm,
+                planning::stepRuleName(first.bindingRule));
+  }
+  if (r.correction)
+    std::printf("  correction: %d poses lifted, max lift %.4g mm in %.1f ms\n",
+                r.correction->penetratingPoses, r.correction->maxLiftMm, 1e3 * r.correctSeconds);
+  std::printf("  poses: %d in %d passes, removed %.6g mm^3 in %.3f s (%s)\n", r.poses, r.passes,
+              r.removedVolumeMm3, r.simulateSeconds,
+              o.preston.enabled ? "preston"
+              : o.swept         ? "swept"
+                                : "discrete");
+  std::printf("  deviation (mm): max %.4g, min %.4g, mean %.4g, rms %.4g\n", s.maxMm, s.minMm,
+              s.meanMm, s.rmsMm);
+  std::printf("  within +-%.4g mm: %.2f %% of %.6g mm^2 (material left %.2f %%, overcut %.2f %%)\n",
+              o.toleranceMm, s.inTolerancePercent, s.areaMm2, s.materialLeftPercent,
+              s.overcutPercent);
+  if (!r.grinding.vConvexity.empty())
+    std::printf("  warning: %zu poses cut non-V-convex stubbles (fig. 8.15)\n",
+                r.grinding.vConvexity.size());
+  if (!r.grinding.collisions.empty())
+    std::printf("  warning: %zu poses collide with the non-cutting part (sec. 8.5)\n",
+                r.grinding.collisions.size());
+  std::printf("wrote %s\n", o.output.string().c_str());
+}
+
+ddf::DisplacementField makeWorkpiece(const SimulateOptions& o, const ddf::DisplacementField& goal) {
+  if (!o.stockMesh) return planning::workpieceWithAllowance(goal, o.allowanceMm);
+  planning::StockWorkpieceParams params;
+  params.fill.progress = consoleProgress("stock");
+  planning::StockWorkpiece stock =
+      planning::workpieceFromStockMesh(goal, io::readMesh(*o.stockMesh), params);
+  endProgressLine();
+  return std::move(stock.workpiece);
+}
+
+void correct(const SimulateOptions& o, const ddf::DisplacementField& goal, CsvPath& path,
+             SimulationResult& r) {
+  const Clock::time_point start = Clock::now();
+  planning::PenetrationCorrectionParams params;
+  params.gridSize = o.correction.grid;
+  params.every = o.correction.every;
+  params.normals = path.normals;
+  params.progress = consoleProgress("correcting");
+  r.correction = planning::correctPenetrations(goal, planning::toolMesh(o.tool), path.path, params);
+  endProgressLine();
+  r.correctSeconds = secondsSince(start);
+}
+
+void cut(const SimulateOptions& o, const CsvPath& path, ddf::DisplacementField& part,
+         SimulationResult& r) {
+  const Clock::time_point start = Clock::now();
+  if (o.preston.enabled) {
+    planning::PrestonParams params;
+    params.prestonCoefficientMm2PerN = o.preston.kpMm2PerN;
+    params.forceN = o.preston.forceN;
+    params.surfaceSpeedMmPerS = 1e3 * o.preston.wheelSpeedMPerS;
+    r.prestonFeedMmPerMin = o.preston.feedMmPerMin.value_or(path.path.feedMmPerMin);
+    params.feedMmPerS = r.prestonFeedMmPerMin / 60.0;
+    params.infeedMm = o.preston.infeedMm;
+    params.normals = path.normals;
+    params.progress = consoleProgress("preston");
+    r.preston = planning::applyPrestonRemoval(part, planning::toolMesh(o.tool), path.path, params);
+    r.removedVolumeMm3 = r.preston->removedVolumeMm3;
+  } else {
+    planning::GrindingSimulationParams simulation;
+    simulation.checkVConvexity = o.checkVConvexity;
+    simulation.mode = o.swept ? planning::SweepMode::Swept : planning::SweepMode::Discrete;
+    r.grinding = planning::simulateGrinding(part, planning::toolMeshes(o.tool), path.path,
+                                            simulation, consoleProgress("grinding"));
+    r.removedVolumeMm3 = r.grinding.removedVolumeMm3;
+  }
+  endProgressLine();
+  r.simulateSeconds = secondsSince(start);
+}
+
+int runSimulate(std::span<const std::string> words) {
+  const Clock::time_point begin = Clock::now();
+  const SimulateOptions o = parseSimulateOptions(words);
+  SimulationResult r;
+  const ddf::DisplacementField goal = loadInput(o.input);
+  CsvPath path = pathFromCsv(io::readToolPathCsv(o.paths), goal, o, o.paths.filename().string());
+  r.passes = static_cast<int>(path.path.passStarts.size());
+  r.poses = static_cast<int>(path.path.poses.size());
+  r.sampling = path.sampling;
+  std::printf("simulate %s on %s: %d faces, m = %d, %d poses\n", o.tool.name.c_str(),
+              o.input.string().c_str(), goal.faceCount(), goal.raster().m, r.poses);
+  ddf::DisplacementField part = makeWorkpiece(o, goal);
+  r.loadSeconds = secondsSince(begin);
+  if (o.correction.enabled) correct(o, goal, path, r);
+  cut(o, path, part, r);
+  io::writeDdf(part, o.output);
+  const planning::ScalarField deviation = planning::deviationMap(part, goal);
+  const planning::ToleranceBand band{-o.toleranceMm, o.toleranceMm};
+  r.stats = planning::errorStatistics(deviation, goal, band);
+  if (o.errorMap) {
+    io::VtpPointData data;
+    const ddf::TriangleMesh mesh = errorMapMesh(part, deviation, band, data);
+    io::writeVtp(mesh, data, *o.errorMap);
+  }
+  r.totalSeconds = secondsSince(begin);
+  if (o.report) writeReport(o, r);
+  printSummary(o, r);
+  return 0;
+}
+
+}  // namespace
+
+const Command kSimulateCommand{
+    "simulate", "grind tool paths into a part: DDF, error map, JSON report", kHelp, &runSimulate};
+
+}  // namespace ddfcam::cli

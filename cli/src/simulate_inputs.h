@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+// ddfcam-cli simulate: the parsed command line and the tool path built from a tool-path CSV.
+#pragma once
+
+#include <ddfcam/ddf/displacement_field.h>
+#include <ddfcam/io/tool_path_csv.h>
+#include <ddfcam/planning/path_sampling.h>
+#include <ddfcam/planning/tool.h>
+#include <ddfcam/planning/tool_orientation.h>
+#include <ddfcam/planning/tool_path.h>
+
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace ddfcam::cli {
+
+/// @brief Preston removal settings of the command line (units as on the command line).
+struct PrestonOptions {
+  bool enabled = false;                ///< --preston given (default false)
+  double kpMm2PerN = 1e-7;             ///< K_p, mm^2/N (default 1e-7)
+  double forceN = 10.0;                ///< normal force, N (default 10)
+  double wheelSpeedMPerS = 30.0;       ///< wheel surface speed, m/s (default 30)
+  std::optional<double> feedMmPerMin;  ///< feed, mm/min (default: the CSV's first cut row)
+  double infeedMm = 0.1;               ///< nominal infeed of the undeformed tool, mm (0.1)
+};
+
+/// @brief Penetration correction settings of the command line.
+struct CorrectionOptions {
+  bool enabled = false;  ///< --correct given (default false)
+  int every = 1;         ///< exact lift at every k-th pose (default 1)
+  int grid = 50;         ///< tangential grid cells per axis (default 50)
+};
+
+/// @brief Everything the simulate command line chooses.
+struct SimulateOptions {
+  std::filesystem::path input, paths, output;      ///< PART, --paths, -o
+  std::optional<std::filesystem::path> errorMap;   ///< --error-map (default none)
+  std::optional<std::filesystem::path> report;     ///< --report (default none)
+  std::optional<std::filesystem::path> stockMesh;  ///< --stock-mesh (default none)
+  planning::Tool tool;                             ///< the tool (default roll R5 W10)
+  std::string toolKind = "roll";                   ///< kind as named on the command line
+  std::string toolSource = "command line";         ///< "command line" or the library file
+  planning::PlacementParams placement;             ///< --lead, --tilt (default 0, 0)
+  double allowanceMm = 0.0;                        ///< --allowance, mm (default 0)
+  double toleranceMm = 0.01;                       ///< --tolerance, mm (default 0.01)
+  bool checkVConvexity = true;                     ///< not --no-vconvexity-check
+  std::optional<double> sampleToleranceMm;         ///< --sample-tolerance, mm (default none)
+  std::optional<double> stepMm;                    ///< --step, mm (default none)
+  bool swept = false;                              ///< --swept (default false)
+  CorrectionOptions correction;                    ///< --correct ...
+  PrestonOptions preston;                          ///< --preston ...
+
+  /// True when the passes are resampled along the feed (--sample-tolerance or --step).
+  bool resample() const { return sampleToleranceMm.has_value() || stepMm.has_value(); }
+};
+
+/// @brief Parses the words after "simulate".
+/// @throws UsageError for unknown, missing, malformed or conflicting options (exit code 2).
+/// @throws IoError / InvalidInput if --tool-file cannot be read or has no tool --tool-name.
+SimulateOptions parseSimulateOptions(std::span<const std::string> words);
+
+/// @brief The cut moves of a tool path and the contact normals.
+struct CsvPath {
+  planning::ToolPath path;                       ///< poses at the CSV rows (or resampled)
+  std::vector<ddf::Vec3> normals;                ///< #P unit normals, empty if resampled
+  std::vector<planning::PassSampling> sampling;  ///< per pass when resampled, else empty
+};
+
+/// @brief The cut rows of @p table as a tool path on @p goal: one pass per CSV path, the tool
+/// placed with o.placement at every contact (x y z, or the reference point minus the tool's
+/// reference offset for 'tool' CSVs) with the CSV's normal; rolls keep the planned axis, other
+/// tools feed along the chord through the neighbouring rows. With o.resample() each pass's
+/// contacts are located on @p goal and the tool is placed by planning::placeAlongPathDetailed
+/// at the step of o.stepMm or of the tolerance o.sampleToleranceMm (default o.toleranceMm).
+/// @throws InvalidInput naming @p source for no cut rows, unusable normals or contacts that do
+/// not lie on @p goal.
+CsvPath pathFromCsv(const io::ToolPathCsv& table, const ddf::DisplacementField& goal,
+                    const SimulateOptions& o, const std::string& source);
+
+}  // namespace ddfcam::cli
