@@ -9,11 +9,14 @@
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/job_progress_widget.h>
 #include <ddfcam/gui/job_runner.h>
+#include <ddfcam/gui/panels/error_map_panel.h>
 #include <ddfcam/gui/panels/fields_panel.h>
 #include <ddfcam/gui/panels/part_panel.h>
 #include <ddfcam/gui/panels/pick_panel.h>
 #include <ddfcam/gui/panels/segmentation_panel.h>
 #include <ddfcam/gui/panels/simulation_panel.h>
+#include <ddfcam/gui/panels/spacing_refinement_panel.h>
+#include <ddfcam/gui/panels/tools_panel.h>
 #include <ddfcam/gui/panels/streamlines_panel.h>
 #include <ddfcam/gui/part_scene.h>
 #include <ddfcam/gui/part_view.h>
@@ -27,6 +30,8 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileInfo>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
@@ -118,11 +123,21 @@ void MainWindow::createDocks() {
 void MainWindow::registerPanel(Panel* panel) {
   auto* dock = new QDockWidget(panel->title(), this);
   dock->setObjectName("panel_" + panel->id());
-  dock->setWidget(panel);
+  // Panels taller than the window scroll instead of forcing the window (and the view) to grow.
+  auto* scroll = new QScrollArea(dock);
+  scroll->setObjectName("panelScroll_" + panel->id());
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setWidget(panel);
+  // Full width (no horizontal scrolling), scrolled vertically only.
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setMinimumWidth(panel->minimumSizeHint().width() +
+                          scroll->verticalScrollBar()->sizeHint().width());
+  dock->setWidget(scroll);
   addDockWidget(panel->area(), dock);
   for (Panel* other : panels_) {
     if (other->area() == panel->area()) {
-      tabifyDockWidget(qobject_cast<QDockWidget*>(other->parentWidget()), dock);
+      tabifyDockWidget(findChild<QDockWidget*>("panel_" + other->id()), dock);
       break;
     }
   }
@@ -135,10 +150,13 @@ void MainWindow::registerPanel(Panel* panel) {
 void MainWindow::registerDefaultPanels() {
   registerPanel(new PartPanel(*workbench_));
   registerPanel(new FieldsPanel(*workbench_));
+  registerPanel(new ToolsPanel(*workbench_));
   registerPanel(new SimulationPanel(*workbench_));
   registerPanel(new PickPanel(*workbench_));
   registerPanel(new StreamlinesPanel(*workbench_));
   registerPanel(new SegmentationPanel(*workbench_));
+  registerPanel(new ErrorMapPanel(*workbench_));
+  registerPanel(new SpacingRefinementPanel(*workbench_));
   if (auto* first = findChild<QDockWidget*>("panel_fields")) first->raise();
 }
 

@@ -4,6 +4,7 @@
 
 #include <ddfcam/error.h>
 #include <ddfcam/gui/adapters/poly_data.h>
+#include <ddfcam/gui/adapters/tolerance_colours.h>
 #include <ddfcam/gui/vtk_view.h>
 
 #include "scalar_bar.h"
@@ -211,7 +212,9 @@ void PartScene::setSurfaceField(const std::vector<float>& perVertexValues,
     throw InvalidInput("setSurfaceField: field '" + style.title + "' has " +
                        std::to_string(perVertexValues.size()) + " values, the surface has " +
                        std::to_string(vertices) + " vertices");
-  vtkSmartPointer<vtkLookupTable> table = makeLookupTable(style.map, style.lo, style.hi);
+  vtkSmartPointer<vtkLookupTable> table =
+      style.band ? makeToleranceLookupTable(style.lo, style.hi, *style.band)
+                 : makeLookupTable(style.map, style.lo, style.hi);
   // Out-of-range colours only when values are out of range: with colours interpolated before
   // mapping, values exactly at an end of the range would otherwise speckle with them.
   const auto [below, above] = outOfRange(perVertexValues, style.lo, style.hi);

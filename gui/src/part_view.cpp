@@ -8,6 +8,7 @@
 #include <ddfcam/gui/vtk_view.h>
 #include <ddfcam/planning/field_statistics.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <vtkPolyData.h>
@@ -17,6 +18,13 @@
 namespace ddfcam::gui {
 
 namespace {
+
+// An error map's range keeps the band in view: at least twice its wider bound on each side, so
+// the light shades next to the band and the green are never squeezed into a few colours.
+ValueRange widenedForBand(ValueRange range, const planning::ToleranceBand& band) {
+  const double reach = 2.0 * std::max(std::abs(band.lowerMm), std::abs(band.upperMm));
+  return {std::min(range.lo, -reach), std::max(range.hi, reach)};
+}
 
 constexpr const char* kPathsOverlay = "paths";
 constexpr const char* kToolOverlay = "tool";
@@ -111,7 +119,10 @@ void PartView::showField(const std::string& name) {
     throw InvalidInput("the part has no field named '" + name + "'");
   const planning::ScalarField* field =
       name.empty() ? nullptr : findField(document_.project(), name);
-  if (field && display_.field != name) display_.map = defaultColourMap(field->isSigned);
+  if (field && display_.field != name) {
+    display_.map = defaultColourMap(field->isSigned);
+    display_.band.reset();
+  }
   display_.field = name;
   display_.autoRange = true;
   applyFieldDisplay();
@@ -140,6 +151,13 @@ void PartView::setAutoRange() {
   view_.requestRender();
 }
 
+void PartView::setToleranceBand(const std::optional<planning::ToleranceBand>& band) {
+  if (band) planning::validateToleranceBand(*band);
+  display_.band = band;
+  applyFieldDisplay();
+  view_.requestRender();
+}
+
 void PartView::applyFieldDisplay() {
   const planning::ScalarField* field = shownField();
   const planning::Project& p = document_.project();
@@ -155,7 +173,8 @@ void PartView::applyFieldDisplay() {
     const auto range = field->isSigned ? planning::robustFieldRange(field->values)
                                        : planning::fieldRange(field->values);
     if (range) {
-      const ValueRange fit = defaultRange(range->min, range->max, field->isSigned);
+      ValueRange fit = defaultRange(range->min, range->max, field->isSigned);
+      if (display_.band) fit = widenedForBand(fit, *display_.band);
       display_.lo = fit.lo;
       display_.hi = fit.hi;
     }
@@ -165,6 +184,7 @@ void PartView::applyFieldDisplay() {
   style.lo = display_.lo;
   style.hi = display_.hi;
   style.title = fieldTitle(*field);
+  style.band = display_.band;
   scene_->setSurfaceField(ddf::valuesAtSamples(*p.part, field->values, geometry_->surfaceSamples),
                           style);
   emit fieldDisplayChanged();

@@ -89,6 +89,12 @@ QString PlotDock::currentPlotName() const {
   return index < 0 ? QString() : tabs_->tabText(index);
 }
 
+bool PlotDock::showPlot(const QString& name) {
+  QCustomPlot* target = findPlot(name);
+  if (target != nullptr) tabs_->setCurrentWidget(target);
+  return target != nullptr;
+}
+
 void PlotDock::showHistogram(const planning::Histogram& histogram, const QString& xLabel) {
   QCustomPlot* target = plot(kHistogramTab);
   setHistogramBars(target, histogram, xLabel);

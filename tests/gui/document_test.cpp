@@ -120,7 +120,11 @@ void DocumentTest::everyCommandRoundTrips_data() {
     return std::make_unique<AddPathCommand>(d, linePath("p", 0, 6));
   }) << 2;
   QTest::newRow("add path with tool") << Edit([](Document& d) {
-    planning::Tool ball{"ball R3", planning::ToolKind::Sphere, 3.0, 0.0, 24};
+    planning::Tool ball{.name = "ball R3",
+                        .kind = planning::ToolKind::Sphere,
+                        .radiusMm = 3.0,
+                        .widthMm = 0.0,
+                        .segments = 24};
     return std::make_unique<AddPathCommand>(d, linePath("q", 99, 4), ball);
   }) << 2;
 }
@@ -172,7 +176,11 @@ void DocumentTest::commandsRefuseBadInput() {
   planning::ToolPath unordered = linePath("p", 0, 4);
   unordered.passStarts = {0, 3, 2};
   QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput, AddPathCommand(document, unordered));
-  planning::Tool flat{"flat", planning::ToolKind::CylinderRoll, -1.0, 10.0, 50};
+  planning::Tool flat{.name = "flat",
+                      .kind = planning::ToolKind::CylinderRoll,
+                      .radiusMm = -1.0,
+                      .widthMm = 10.0,
+                      .segments = 50};
   QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput,
                            AddPathCommand(document, linePath("p", 0, 4), flat));
   QVERIFY(planning::projectsEqual(document.project(), start));

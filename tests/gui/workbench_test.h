@@ -9,6 +9,7 @@
 #include <ddfcam/gui/vtk_error_monitor.h>
 #include <ddfcam/planning/project.h>
 
+#include <QDockWidget>
 #include <QObject>
 #include <QtTest/QtTest>
 
@@ -37,6 +38,12 @@ class WorkbenchTest : public QObject {
   void load(planning::Project project) {
     f_.window->document().reset(std::move(project));
     QVERIFY(f_.window->waitForJobs());
+  }
+  /// Raises the dock of the panel with identifier @p id (Panel::id()); false if there is none.
+  bool raisePanel(const QString& id) {
+    auto* dock = f_.window->findChild<QDockWidget*>("panel_" + id);
+    if (dock) dock->raise();
+    return dock != nullptr;
   }
   /// Waits for the jobs and checks that no error dialog was shown.
   void waitOk() {

@@ -6,14 +6,24 @@
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/document_command.h>
 #include <ddfcam/gui/job_runner.h>
+#include <ddfcam/gui/panels/simulation_options.h>
+#include <ddfcam/gui/panels/simulation_playback.h>
+#include <ddfcam/gui/panels/tool_editor.h>
 #include <ddfcam/gui/part_view.h>
-#include <ddfcam/planning/path_simulation.h>
+#include <ddfcam/gui/tool_overlay.h>
+#include <ddfcam/gui/vtk_view.h>
 
 #include <QAction>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QGridLayout>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QSpinBox>
 #include <QVBoxLayout>
 
 #include <memory>
@@ -23,10 +33,9 @@ namespace ddfcam::gui {
 namespace {
 
 QString toolText(const planning::Tool& t) {
-  const QString kind = t.kind == planning::ToolKind::CylinderRoll
-                           ? QObject::tr("roll R%1 x W%2 mm").arg(t.radiusMm).arg(t.widthMm)
-                           : QObject::tr("ball R%1 mm").arg(t.radiusMm);
-  return QString::fromStdString(t.name) + "  (" + kind + ")";
+  return QObject::tr("%1  (%2, R %3 mm)")
+      .arg(QString::fromStdString(t.name), ToolEditor::kindName(t.kind))
+      .arg(t.radiusMm);
 }
 
 QString pathText(const planning::ToolPath& p) {
@@ -45,6 +54,28 @@ QListWidget* addList(QVBoxLayout* layout, QWidget* parent, const QString& title,
   return list;
 }
 
+QPushButton* makeButton(const QString& text, const char* name, QWidget* parent) {
+  auto* button = new QPushButton(text, parent);
+  button->setObjectName(name);
+  return button;
+}
+
+QLabel* makeLabel(const char* name, QWidget* parent) {
+  auto* label = new QLabel(parent);
+  label->setObjectName(name);
+  label->setWordWrap(true);
+  label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  return label;
+}
+
+QSpinBox* makeIntSpin(const char* name, int lo, int hi, int value, QWidget* parent) {
+  auto* spin = new QSpinBox(parent);
+  spin->setObjectName(name);
+  spin->setRange(lo, hi);
+  spin->setValue(value);
+  return spin;
+}
+
 }  // namespace
 
 SimulationPanel::SimulationPanel(Workbench& workbench, QWidget* parent) : Panel(workbench, parent) {
@@ -52,23 +83,114 @@ SimulationPanel::SimulationPanel(Workbench& workbench, QWidget* parent) : Panel(
   run->setObjectName("actionSimulatePath");
   connect(run, &QAction::triggered, this, [this] { simulatePath(paths_->currentRow()); });
   actions_ << run;
-  auto* layout = new QVBoxLayout(this);
+  // The panel is taller than most docks: it scrolls rather than squashing its lists.
+  auto* scroll = new QScrollArea(this);
+  scroll->setObjectName("simulationScroll");
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  auto* content = new QWidget(scroll);
+  auto* layout = new QVBoxLayout(content);
   tools_ = addList(layout, this, tr("Tools"), "toolList");
   paths_ = addList(layout, this, tr("Tool paths"), "pathList");
+  layout->addWidget(makeWorkpieceGroup());
+  auto* optionsBox = new QGroupBox(tr("Simulation options"), this);
+  options_ = new SimulationOptions(optionsBox);
+  options_->setObjectName("simulationOptions");
+  (new QVBoxLayout(optionsBox))->addWidget(options_);
+  layout->addWidget(optionsBox);
   simulate_ = new QPushButton(tr("Simulate path"), this);
   simulate_->setObjectName("simulateButton");
   layout->addWidget(simulate_);
+  report_ = makeLabel("simulationReport", this);
+  layout->addWidget(report_);
+  layout->addWidget(makeCorrectionGroup());
+  layout->addWidget(new QLabel(tr("Playback"), this));
+  playback_ = new SimulationPlayback(workbench, {}, this);
+  playback_->setObjectName("playback");
+  layout->addWidget(playback_);
   states_ = addList(layout, this, tr("Simulation states"), "stateList");
   restore_ = new QPushButton(tr("Restore state"), this);
   restore_->setObjectName("restoreStateButton");
   layout->addWidget(restore_);
+  scroll->setWidget(content);
+  auto* outer = new QVBoxLayout(this);
+  outer->setContentsMargins(0, 0, 0, 0);
+  outer->addWidget(scroll);
   connect(simulate_, &QPushButton::clicked, run, &QAction::trigger);
   connect(restore_, &QPushButton::clicked, this, [this] { restoreState(states_->currentRow()); });
-  connect(paths_, &QListWidget::currentRowChanged, this, [this] { showToolOfSelectedPath(); });
+  connect(paths_, &QListWidget::currentRowChanged, this, [this] {
+    playback_->setPathIndex(paths_->currentRow());
+    if (!playback_->isActive()) showToolOfSelectedPath();
+  });
+  connect(playback_, &SimulationPlayback::ended, this, [this] { showToolOfSelectedPath(); });
+  connect(options_, &SimulationOptions::changed, this, &SimulationPanel::applyOptions);
   connect(&workbench.document, &Document::changed, this, [this](Changes what) {
     if (what & (Change::Tools | Change::Paths | Change::States | Change::Part)) refresh();
   });
+  applyOptions();
   refresh();
+}
+
+QWidget* SimulationPanel::makeWorkpieceGroup() {
+  auto* box = new QGroupBox(tr("Workpiece"), this);
+  auto* grid = new QGridLayout(box);
+  allowance_ = new QDoubleSpinBox(box);
+  allowance_->setObjectName("allowanceSpin");
+  allowance_->setRange(-10.0, 10.0);
+  allowance_->setDecimals(3);
+  allowance_->setSingleStep(0.05);
+  allowance_->setValue(0.2);
+  allowance_->setSuffix(tr(" mm"));
+  raise_ = makeButton(tr("Raise by stock allowance"), "raiseAllowanceButton", box);
+  raise_->setToolTip(
+      tr("Raise the part along its normal by the allowance; the current heights "
+         "are kept as state 'design' for the error map"));
+  stockMesh_ = makeButton(tr("Stock from mesh..."), "stockMeshButton", box);
+  workpieceLabel_ = makeLabel("workpieceLabel", box);
+  grid->addWidget(allowance_, 0, 0);
+  grid->addWidget(raise_, 0, 1);
+  grid->addWidget(stockMesh_, 1, 0, 1, 2);
+  grid->addWidget(workpieceLabel_, 2, 0, 1, 2);
+  connect(raise_, &QPushButton::clicked, this, [this] { raiseByAllowance(allowance_->value()); });
+  connect(stockMesh_, &QPushButton::clicked, this, [this] {
+    const QString file = QFileDialog::getOpenFileName(
+        this, tr("Stock mesh"), {}, tr("Meshes (*.stl *.obj *.ply *.off);;All files (*)"));
+    if (!file.isEmpty()) stockFromMesh(file);
+  });
+  return box;
+}
+
+QWidget* SimulationPanel::makeCorrectionGroup() {
+  auto* box = new QGroupBox(tr("Penetration correction"), this);
+  auto* grid = new QGridLayout(box);
+  correctionGrid_ = makeIntSpin("correctionGridSpin", 2, 1000, 50, box);
+  correctionGrid_->setToolTip(tr("Tangential grid cells per axis"));
+  correctionEvery_ = makeIntSpin("correctionEverySpin", 1, 1000, 1, box);
+  correctionEvery_->setToolTip(
+      tr("Exact lift at every k-th pose, interpolated and checked "
+         "in between"));
+  correct_ = makeButton(tr("Correct penetrations"), "correctPenetrationsButton", box);
+  correctionLabel_ = makeLabel("correctionLabel", box);
+  grid->addWidget(new QLabel(tr("Grid"), box), 0, 0);
+  grid->addWidget(correctionGrid_, 0, 1);
+  grid->addWidget(new QLabel(tr("Every"), box), 0, 2);
+  grid->addWidget(correctionEvery_, 0, 3);
+  grid->addWidget(correct_, 1, 0, 1, 4);
+  grid->addWidget(correctionLabel_, 2, 0, 1, 4);
+  connect(correct_, &QPushButton::clicked, this, [this] {
+    correctPenetrations(paths_->currentRow(), correctionGrid_->value(), correctionEvery_->value());
+  });
+  return box;
+}
+
+void SimulationPanel::applyOptions() {
+  playback_->setSimulationParams(options_->grindingParams());
+  const bool preston = options_->removalModel() == RemovalModel::Preston;
+  if (preston && playback_->isActive()) playback_->cancel();
+  playback_->setEnabled(!preston);
+  playback_->setToolTip(preston ? tr("Playback cuts rigidly with the depth buffer; the Preston "
+                                     "model runs only with 'Simulate path'")
+                                : QString());
 }
 
 void SimulationPanel::refresh() {
@@ -85,52 +207,25 @@ void SimulationPanel::refresh() {
   states_->setCurrentRow(states == 0 ? -1 : std::clamp(stateRow, 0, states - 1));
   simulate_->setEnabled(paths > 0 && p.part.has_value());
   restore_->setEnabled(states > 0 && p.part.has_value());
+  raise_->setEnabled(p.part.has_value());
+  stockMesh_->setEnabled(p.part.has_value());
+  correct_->setEnabled(paths > 0 && p.part.has_value());
 }
 
 void SimulationPanel::showToolOfSelectedPath() {
   const planning::Project& p = workbench().document.project();
   const int row = paths_->currentRow();
+  PartScene& scene = workbench().partView.scene();
   if (row < 0 || row >= static_cast<int>(p.paths.size()) || p.paths[row].poses.empty() ||
       p.paths[row].tool < 0 || p.paths[row].tool >= static_cast<int>(p.tools.size())) {
-    workbench().partView.setToolOverlay(std::nullopt);
-    return;
+    hideToolOverlay(scene);
+  } else {
+    const planning::ToolPath& path = p.paths[static_cast<std::size_t>(row)];
+    runUserAction(workbench().reportError, tr("Show tool"), [&] {
+      showToolOverlay(scene, p.tools[static_cast<std::size_t>(path.tool)], path.poses.front().pose);
+    });
   }
-  const planning::ToolPath& path = p.paths[static_cast<std::size_t>(row)];
-  runUserAction(workbench().reportError, tr("Show tool"), [&] {
-    workbench().partView.setToolOverlay(
-        std::make_pair(p.tools[static_cast<std::size_t>(path.tool)], path.poses.front().pose));
-  });
-}
-
-bool SimulationPanel::simulatePath(int index) {
-  const planning::Project& p = workbench().document.project();
-  bool started = false;
-  runUserAction(workbench().reportError, tr("Simulate path"), [&] {
-    if (!p.part) throw InvalidInput("there is no part to grind");
-    if (index < 0 || index >= static_cast<int>(p.paths.size()))
-      throw InvalidInput("select a tool path to simulate");
-    const planning::ToolPath& path = p.paths[static_cast<std::size_t>(index)];
-    if (path.tool < 0 || path.tool >= static_cast<int>(p.tools.size()))
-      throw InvalidInput("path '" + path.name + "' refers to a missing tool");
-    // The job grinds a copy: a cancelled or failed run leaves the document as it was.
-    auto part = std::make_shared<ddf::DisplacementField>(*p.part);
-    const planning::Tool tool = p.tools[static_cast<std::size_t>(path.tool)];
-    const auto title = tr("Simulate path '%1'").arg(QString::fromStdString(path.name));
-    Workbench* wb = &workbench();
-    started =
-        wb->jobs.start(title, [part, tool, path, title, wb](const ProgressCallback& progress) {
-          planning::PathSimulationParams params;
-          params.progress = progress;
-          planning::simulatePath(*part, tool, path, params);
-          return std::function<void()>([part, path, title, wb] {
-            planning::SimulationState state{"after " + path.name, part->allHeights()};
-            wb->document.push(std::make_unique<SetHeightsCommand>(
-                wb->document, title, part->allHeights(), std::move(state)));
-          });
-        });
-    if (!started) throw InvalidInput("another job is running; wait for it or cancel it first");
-  });
-  return started;
+  workbench().partView.view().requestRender();
 }
 
 bool SimulationPanel::restoreState(int index) {

@@ -57,6 +57,7 @@ StreamlinesPanel::StreamlinesPanel(Workbench& workbench, QWidget* parent)
   layout->addWidget(buildFieldGroup());
   layout->addWidget(buildSeedGroup());
   layout->addWidget(buildSmoothingGroup());
+  layout->addWidget(buildPlacementGroup());
   layout->addWidget(pathList_, 1);
   layout->addWidget(status_);
   connect(&workbench.partView, &PartView::picked, this, &StreamlinesPanel::onPicked);

@@ -159,8 +159,7 @@ void StreamlinesPanel::addPath(std::vector<planning::Streamline> lines, const QS
     const planning::Tool tool = needTool ? planning::Tool{} : p.tools[toolIndex];
     planning::StreamlinePathParams params;
     params.name = QString("%1 %2").arg(name).arg(p.paths.size() + 1).toStdString();
-    planning::ToolPath path =
-        planning::toolPathFromStreamlines(*p.part, lines, tool, toolIndex, params);
+    planning::ToolPath path = placeLines(*p.part, lines, tool, toolIndex, params);
     double length = 0;
     for (const auto& line : lines) length += line.lengthMm;
     rawLines_[params.name] = lines;
@@ -241,8 +240,7 @@ void StreamlinesPanel::replaceSelected(std::vector<planning::Streamline> lines,
     planning::StreamlinePathParams params;
     params.name = old.name;
     params.feedMmPerMin = old.feedMmPerMin;
-    planning::ToolPath path =
-        planning::toolPathFromStreamlines(*p.part, lines, p.tools.at(old.tool), old.tool, params);
+    planning::ToolPath path = placeLines(*p.part, lines, p.tools.at(old.tool), old.tool, params);
     const QString text = QString("%1 '%2'").arg(what, QString::fromStdString(old.name));
     document.push(std::make_unique<ReplacePathCommand>(document, index, std::move(path), text));
   });

@@ -26,6 +26,8 @@ class DocumentCommand : public QUndoCommand {
   virtual std::size_t memoryBytes() const;
 
  protected:
+  // A composite applies its parts' edits in one undo step.
+  friend class CompositeCommand;
   /// @brief Performs the edit; returns what changed.
   virtual Changes apply(planning::Project& project) = 0;
   /// @brief Undoes apply(); returns what changed.

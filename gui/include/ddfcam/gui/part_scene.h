@@ -3,6 +3,7 @@
 #pragma once
 
 #include <ddfcam/gui/adapters/colour_map.h>
+#include <ddfcam/planning/error_map.h>
 
 #include <Eigen/Core>
 
@@ -48,6 +49,9 @@ struct FieldStyle {
   double lo = 0.0;                     ///< value shown with the map's first colour (default 0)
   double hi = 1.0;                     ///< value shown with its last colour, > lo (default 1)
   std::string title;  ///< scalar bar title with unit, e.g. "material removed [mm]" (default "")
+  /// Error-map colouring instead of map: green inside the band, blue above, red below
+  /// (makeToleranceLookupTable); nullopt = use map (default).
+  std::optional<planning::ToleranceBand> band{};
 };
 
 /// @brief Look of one overlay.

@@ -7,6 +7,7 @@
 #include <ddfcam/gui/adapters/colour_map.h>
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/part_geometry.h>
+#include <ddfcam/planning/error_map.h>
 #include <ddfcam/planning/tool.h>
 
 #include <Eigen/Geometry>
@@ -29,6 +30,9 @@ struct FieldDisplay {
   bool autoRange = true;               ///< range follows the data (symmetric if signed)
   double lo = 0.0;                     ///< value at the low end of the map (field unit)
   double hi = 1.0;                     ///< value at the high end of the map (field unit)
+  /// Tolerance band of an error map (green inside, blue above, red below) instead of the
+  /// colour map; cleared when another field is shown (default none).
+  std::optional<planning::ToleranceBand> band{};
 };
 
 /// @brief A picked point of the part surface.
@@ -71,6 +75,10 @@ class PartView : public QObject {
   void setRange(double lo, double hi);
   /// @brief Lets the colour range follow the data again.
   void setAutoRange();
+  /// @brief Colours the shown field as an error map with tolerance band @p band (nullopt:
+  /// back to the colour map). An automatic range then also spans twice the band.
+  /// @throws InvalidInput for an invalid band.
+  void setToleranceBand(const std::optional<planning::ToleranceBand>& band);
 
   /// @brief Shows @p tool at @p pose (part frame) as a translucent overlay; nullopt hides it.
   void setToolOverlay(const std::optional<std::pair<planning::Tool, Eigen::Isometry3d>>& tool);

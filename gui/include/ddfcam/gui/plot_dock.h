@@ -42,6 +42,9 @@ class PlotDock : public QDockWidget {
   /// @brief Name of the current tab; empty if there is none.
   QString currentPlotName() const;
 
+  /// @brief Makes tab @p name current. @return false if there is no such tab.
+  bool showPlot(const QString& name);
+
   /// @brief Draws @p histogram (setHistogramBars) in tab kHistogramTab with x axis label
   /// @p xLabel and makes that tab current.
   void showHistogram(const planning::Histogram& histogram, const QString& xLabel);

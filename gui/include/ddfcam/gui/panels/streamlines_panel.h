@@ -6,8 +6,10 @@
 #include <ddfcam/gui/workbench.h>
 #include <ddfcam/planning/flow_field.h>
 #include <ddfcam/planning/line_field.h>
+#include <ddfcam/planning/path_sampling.h>
 #include <ddfcam/planning/region_plan.h>
 #include <ddfcam/planning/streamline.h>
+#include <ddfcam/planning/streamline_path.h>
 
 #include <QPointF>
 #include <cstdint>
@@ -55,7 +57,11 @@ struct PickResult;
 /// one path (one undo step). The smoothing slider previews planning::smoothMovingAverage of
 /// the selected path's raw lines live (overlay kPreviewOverlay, no undo step); "Apply"
 /// replaces the path by the smoothed lines put back on the surface (one undo step); "Fair"
-/// replaces it by planning::fairStreamline of the raw lines (a job, one undo step). The path
+/// replaces it by planning::fairStreamline of the raw lines (a job, one undo step). The "Tool
+/// placement" group sets lead and tilt (planning::PlacementParams) and, with "sample from
+/// tolerance", resamples the lines along the feed at the tolerance-derived step (or an
+/// override; planning::placeAlongPath) whenever the panel creates or replaces a path; a label
+/// shows the step and binding rule of the last created path. The path
 /// list shows every path's line count, cutting and idle length and a total. Fields and
 /// tracing run as cancellable jobs; the field is kept until the part, its heights or the
 /// choices change.
@@ -139,6 +145,20 @@ class StreamlinesPanel : public Panel {
   /// @brief The path list.
   PathListWidget& pathList() const { return *pathList_; }
 
+  /// @brief Sets the lead and tilt angles of the tool on new paths, deg (|angle| < 90; the
+  /// spin boxes clamp to +-89).
+  void setPlacementAngles(double leadDeg, double tiltDeg);
+  /// @brief Turns "sample from tolerance" on or off with tolerance @p toleranceMm (> 0) and an
+  /// optional fixed step @p stepOverrideMm (> 0) (spin boxes clamp to their ranges).
+  void setSampling(bool fromTolerance, double toleranceMm,
+                   std::optional<double> stepOverrideMm = std::nullopt);
+  /// @brief Path parameters the panel uses for new paths (placement and sampling from the
+  /// "Tool placement" group; name and feed at their defaults).
+  planning::StreamlinePathParams placementParams() const;
+  /// @brief Sampling of each pass of the last path the panel created or replaced (empty
+  /// without sampling or before any path).
+  const std::vector<planning::PassSampling>& lastSampling() const { return lastSampling_; }
+
   /// @brief The line fields paths follow, cached per state of the part's heights.
   struct Fields;
 
@@ -158,6 +178,13 @@ class StreamlinesPanel : public Panel {
   QLayout* buildGlyphToggles(QWidget* group);
   QWidget* buildSeedGroup();
   QWidget* buildSmoothingGroup();
+  QWidget* buildPlacementGroup();
+  /// Places @p tool along @p lines with the placement group's settings and shows the sampling.
+  planning::ToolPath placeLines(const ddf::DisplacementField& part,
+                                const std::vector<planning::Streamline>& lines,
+                                const planning::Tool& tool, int toolIndex,
+                                planning::StreamlinePathParams params);
+  void showSampling();
   void onPicked(const PickResult& pick);
   void refreshRegions();
   FieldChoice currentChoice() const;
@@ -189,6 +216,14 @@ class StreamlinesPanel : public Panel {
   QSlider* window_ = nullptr;
   QLabel* windowLabel_ = nullptr;
   QDoubleSpinBox* deviation_ = nullptr;
+  QDoubleSpinBox* lead_ = nullptr;
+  QDoubleSpinBox* tilt_ = nullptr;
+  QCheckBox* sampleFromTolerance_ = nullptr;
+  QDoubleSpinBox* tolerance_ = nullptr;
+  QCheckBox* overrideStep_ = nullptr;
+  QDoubleSpinBox* step_ = nullptr;
+  QLabel* samplingLabel_ = nullptr;
+  std::vector<planning::PassSampling> lastSampling_;
   std::vector<QCheckBox*> glyphToggles_;  ///< flow, k_max, k_min, singularities
   QLabel* status_ = nullptr;
   PathListWidget* pathList_ = nullptr;

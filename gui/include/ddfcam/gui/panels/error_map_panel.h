@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+// ddfcam gui: the Error map panel: deviation of the simulated from the desired surface with a
+// tolerance band, its statistics and histogram, the deviation along a path, and the scallop
+// table (issue 5 part 4).
+#pragma once
+
+#include <ddfcam/gui/workbench.h>
+#include <ddfcam/planning/error_map.h>
+#include <ddfcam/planning/scallop_prediction.h>
+
+#include <optional>
+#include <vector>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+class QTableWidget;
+
+namespace ddfcam::gui {
+
+/// @brief Compares the part's current heights with a desired surface on the same support
+/// (sec. 8.4.1): a simulation state (e.g. "stock" of the demo) or the design mesh converted onto
+/// the part's support (planning::workpieceFromStockMesh). "Compute" runs planning::deviationMap
+/// as a job and stores the result as field kDeviationField (one undo step); the view then shows
+/// it with the tolerance band (blue = material left, green = in tolerance, red = overcut).
+/// Statistics (planning::errorStatistics) and the area histogram (planning::errorHistogram, plot
+/// tab kHistogramTab) follow the band and the chosen region at once. "Plot along path" draws
+/// planning::deviationAlongPath of the selected path (plot tab kAlongPathTab). "Scallop table"
+/// runs planning::scallopTable on defaultScallopCases() as a job and fills the table.
+class ErrorMapPanel : public Panel {
+  Q_OBJECT
+
+ public:
+  static constexpr const char* kDeviationField = "deviation";
+  static constexpr const char* kHistogramTab = "Error histogram";
+  static constexpr const char* kAlongPathTab = "Deviation along path";
+
+  explicit ErrorMapPanel(Workbench& workbench, QWidget* parent = nullptr);
+  QString title() const override { return tr("Error map"); }
+  QString id() const override { return "errorMap"; }
+
+  /// @brief Chooses the desired surface: simulation state @p index, or -1 for the design mesh.
+  /// @return false if there is no such state (or no design mesh for -1).
+  bool setDesiredSurface(int stateIndex);
+  /// @brief Restricts statistics and histogram to region @p index (-1: whole part).
+  void setRegion(int index);
+  /// @brief Sets the tolerance band [e_l, e_u], mm (recolours and updates the statistics).
+  void setToleranceBand(const planning::ToleranceBand& band);
+  planning::ToleranceBand toleranceBand() const;
+  /// @brief Starts the error-map job. @return true if started.
+  bool computeErrorMap();
+  /// @brief Statistics of the shown error map over the chosen region, if there is one.
+  const std::optional<planning::ErrorStatistics>& statistics() const { return statistics_; }
+  /// @brief Plots the deviation along path @p index. @return true if plotted.
+  bool plotAlongPath(int index);
+  /// @brief Starts the scallop-table job. @return true if started.
+  bool computeScallopTable();
+  /// @brief Rows of the last scallop table.
+  const std::vector<planning::ScallopRow>& scallopRows() const { return scallopRows_; }
+  /// @brief The cases of the scallop table: ball on a plane and on a convex cylinder, a flat
+  /// wheel on a convex cylinder, a tilted flat end on a plane.
+  static std::vector<planning::ScallopCase> defaultScallopCases();
+
+ private:
+  void buildInputs();
+  void buildOutputs();
+  void refreshChoices();
+  void onBandEdited();
+  void updateStatistics();
+  void showStatistics();
+  void showScallopRows();
+  const planning::ScalarField* deviationField() const;
+
+  QComboBox* desired_ = nullptr;
+  QComboBox* region_ = nullptr;
+  QComboBox* path_ = nullptr;
+  QDoubleSpinBox* lower_ = nullptr;
+  QDoubleSpinBox* upper_ = nullptr;
+  QPushButton* compute_ = nullptr;
+  QPushButton* alongPath_ = nullptr;
+  QPushButton* scallop_ = nullptr;
+  QLabel* stats_ = nullptr;
+  QTableWidget* scallopTable_ = nullptr;
+  std::optional<planning::ErrorStatistics> statistics_;
+  std::vector<planning::ScallopRow> scallopRows_;
+};
+
+}  // namespace ddfcam::gui

@@ -1,0 +1,228 @@
+// SPDX-License-Identifier: MIT
+// The Error map panel under Xvfb: the demo part ground by its roll passes against its stock
+// state: the groove is overcut by the infeed, the colours the view draws agree with the
+// area statistics, band edits recolour, the deviation along a pass follows the groove, undo,
+// and the scallop table against the ball-on-plane formula.
+#include "frame_checks.h"
+#include "workbench_test.h"
+
+#include <ddfcam/ddf/analytic_generators.h>
+#include <ddfcam/gui/adapters/error_plots.h>
+#include <ddfcam/gui/adapters/tolerance_colours.h>
+#include <ddfcam/gui/document.h>
+#include <ddfcam/gui/document_command.h>
+#include <ddfcam/gui/panels/error_map_panel.h>
+#include <ddfcam/gui/part_scene.h>
+#include <ddfcam/gui/part_view.h>
+#include <ddfcam/gui/plot_dock.h>
+#include <ddfcam/gui/vtk_view.h>
+#include <ddfcam/planning/demo_project.h>
+#include <ddfcam/planning/path_simulation.h>
+
+#include <QDockWidget>
+#include <QTableWidget>
+#include <QUndoStack>
+#include <QtTest/QtTest>
+#include <qcustomplot.h>
+
+#include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkIdList.h>
+#include <vtkMapper.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkScalarsToColors.h>
+
+#include <array>
+#include <cmath>
+
+using ddfcam::gui::ErrorMapPanel;
+using ddfcam::planning::ToleranceBand;
+using ddfcam::planning::ToleranceClass;
+
+namespace {
+
+// The demo passes sink the roll this far below the design surface (DemoPassesParams); the
+// demo stock lies this far above it along z (DemoPartParams).
+const double kInfeedMm = ddfcam::planning::DemoPassesParams{}.depthMm;
+const double kStockMm = ddfcam::ddf::DemoPartParams{}.allowanceMm;
+
+struct ClassAreas {
+  std::array<double, 3> area{};  // indexed by ToleranceClass
+  double percent(ToleranceClass c) const {
+    return 100.0 * area[static_cast<int>(c)] / (area[0] + area[1] + area[2]);
+  }
+};
+
+// Reads the colours back from what the surface actor draws: every display vertex's scalar
+// through the actor's own lookup table, classified by colour, each triangle's area split
+// equally among its corners. Independent of planning::errorStatistics' raster quadrature.
+ClassAreas drawnClassAreas(vtkActor* actor) {
+  vtkMapper* mapper = actor->GetMapper();
+  auto* data = vtkPolyData::SafeDownCast(mapper->GetInput());
+  vtkDataArray* scalars = data->GetPointData()->GetScalars();
+  vtkScalarsToColors* table = mapper->GetLookupTable();
+  ClassAreas result;
+  vtkCellArray* polys = data->GetPolys();
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  for (polys->InitTraversal(); polys->GetNextCell(ids);) {
+    if (ids->GetNumberOfIds() != 3) continue;
+    std::array<Eigen::Vector3d, 3> p;
+    for (int c = 0; c < 3; ++c) data->GetPoint(ids->GetId(c), p[c].data());
+    const double area = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
+    for (int c = 0; c < 3; ++c) {
+      std::array<double, 3> rgb{};
+      table->GetColor(scalars->GetTuple1(ids->GetId(c)), rgb.data());
+      result.area[static_cast<int>(ddfcam::gui::toleranceClassOfColour(rgb))] += area / 3.0;
+    }
+  }
+  return result;
+}
+
+}  // namespace
+
+class ErrorMapPanelTest : public ddfcam::test::WorkbenchTest {
+  Q_OBJECT
+
+ private slots:
+  void initTestCase();
+  void init();
+  void stockIsLeftAndGroovesAreOvercut();
+  void drawnColoursMatchTheStatistics();
+  void bandEditsRecolourAndUpdateStatistics();
+  void deviationAlongAPassFollowsTheGroove();
+  void undoRemovesTheErrorMap();
+  void scallopTableMatchesTheBallFormula();
+
+ private:
+  ErrorMapPanel* panel() { return f_.window->findChild<ErrorMapPanel*>(); }
+  QUndoStack& undo() const { return *f_.window->document().undoStack(); }
+  const ddfcam::planning::ScalarField* deviation() const {
+    for (const auto& field : project().fields)
+      if (field.name == ErrorMapPanel::kDeviationField) return &field;
+    return nullptr;
+  }
+};
+
+void ErrorMapPanelTest::initTestCase() {
+  QVERIFY(openWorkbench(false));
+  QVERIFY(panel() != nullptr);
+}
+
+// The demo project ground by its three passes (on a copy, outside the code under test), then
+// the error map against the design mesh with the band [-0.01, 0.01] mm.
+void ErrorMapPanelTest::init() {
+  f_.script.errors.clear();
+  ddfcam::planning::Project p = ddfcam::planning::demoProject();
+  ddfcam::planning::simulatePath(*p.part, p.tools.front(), p.paths.front());
+  load(std::move(p));
+  if (auto* dock = f_.window->findChild<QDockWidget*>("panel_errorMap")) dock->raise();
+  QVERIFY(panel()->setDesiredSurface(-1));
+  panel()->setToleranceBand({-0.01, 0.01});
+  QVERIFY(panel()->computeErrorMap());
+  waitOk();
+  QVERIFY(deviation() != nullptr);
+}
+
+void ErrorMapPanelTest::stockIsLeftAndGroovesAreOvercut() {
+  const auto& stats = panel()->statistics();
+  QVERIFY(stats.has_value());
+  // Untouched stock stands the allowance (along z) above the design: at most that along the
+  // normal, all of it where the design is level. The grooves reach at least the infeed below
+  // it (more where the straight roll's rims dip into concave places).
+  QVERIFY2(stats->maxMm <= kStockMm + 1e-3 && stats->maxMm > 0.95 * kStockMm,
+           qPrintable(QString::number(stats->maxMm)));
+  QVERIFY2(stats->minMm < -0.9 * kInfeedMm, qPrintable(QString::number(stats->minMm)));
+  QVERIFY(stats->overcutPercent > 1.0);
+  QVERIFY(stats->materialLeftPercent > 1.0);
+  QVERIFY(std::abs(stats->inTolerancePercent + stats->overcutPercent +
+                   stats->materialLeftPercent - 100.0) < 1e-6);
+  const auto& display = f_.window->partView().fieldDisplay();
+  QCOMPARE(display.field, std::string(ErrorMapPanel::kDeviationField));
+  QVERIFY(display.band.has_value());
+  QCOMPARE(display.band->lowerMm, -0.01);
+}
+
+void ErrorMapPanelTest::drawnColoursMatchTheStatistics() {
+  auto& view = *f_.window->view();
+  view.viewFrom(ddfcam::gui::ViewDirection::PlusZ);
+  const QImage frame = view.renderImage();
+  ddfcam::test::dumpFrame(frame, "error_map_band");
+  ddfcam::test::dumpFrame(f_.window->grab().toImage(), "error_map_window");
+  const ClassAreas drawn = drawnClassAreas(
+      f_.window->partView().scene().actor(ddfcam::gui::Layer::Surface));
+  const auto& stats = *panel()->statistics();
+  qInfo("drawn: in tolerance %.2f %%, overcut %.2f %%, left %.2f %%; statistics: %.2f %%, "
+        "%.2f %%, %.2f %%",
+        drawn.percent(ToleranceClass::InTolerance), drawn.percent(ToleranceClass::Overcut),
+        drawn.percent(ToleranceClass::MaterialLeft), stats.inTolerancePercent,
+        stats.overcutPercent, stats.materialLeftPercent);
+  QVERIFY(std::abs(drawn.percent(ToleranceClass::Overcut) - stats.overcutPercent) < 2.0);
+  QVERIFY(std::abs(drawn.percent(ToleranceClass::InTolerance) - stats.inTolerancePercent) < 2.0);
+  QVERIFY(std::abs(drawn.percent(ToleranceClass::MaterialLeft) - stats.materialLeftPercent) < 2.0);
+}
+
+void ErrorMapPanelTest::bandEditsRecolourAndUpdateStatistics() {
+  // A band wider than the extremes holds the whole part; a narrower lower bound marks more
+  // of the grooves overcut.
+  const auto extremes = *panel()->statistics();
+  panel()->setToleranceBand({extremes.minMm - 0.01, extremes.maxMm + 0.01});
+  QVERIFY(std::abs(panel()->statistics()->inTolerancePercent - 100.0) < 1e-9);
+  const ClassAreas wide = drawnClassAreas(
+      f_.window->partView().scene().actor(ddfcam::gui::Layer::Surface));
+  QVERIFY(wide.percent(ToleranceClass::InTolerance) > 99.5);
+  panel()->setToleranceBand({-0.005, 0.01});
+  const double narrow = panel()->statistics()->overcutPercent;
+  panel()->setToleranceBand({-0.01, 0.01});
+  QVERIFY(narrow > panel()->statistics()->overcutPercent);
+  auto* plot = f_.window->plots().findPlot(ErrorMapPanel::kHistogramTab);
+  QVERIFY(plot != nullptr);
+  QCOMPARE(plot->plottableCount(), 3);
+}
+
+void ErrorMapPanelTest::deviationAlongAPassFollowsTheGroove() {
+  QVERIFY(panel()->plotAlongPath(0));
+  QCustomPlot* plot = f_.window->plots().findPlot(ErrorMapPanel::kAlongPathTab);
+  QVERIFY(plot != nullptr);
+  QCPGraph* graph = nullptr;
+  for (int i = 0; i < plot->graphCount(); ++i)
+    if (plot->graph(i)->name() == "deviation") graph = plot->graph(i);
+  QVERIFY(graph != nullptr && graph->data()->size() > 10);
+  // Every contact is the bottom of its groove: the infeed below the desired surface.
+  int near = 0;
+  for (auto it = graph->data()->constBegin(); it != graph->data()->constEnd(); ++it)
+    near += std::abs(it->value + kInfeedMm) < 0.15 * kInfeedMm ? 1 : 0;
+  QVERIFY2(near > 0.9 * graph->data()->size(), qPrintable(QString::number(near)));
+}
+
+void ErrorMapPanelTest::undoRemovesTheErrorMap() {
+  const int before = undo().count();
+  undo().undo();
+  QVERIFY(deviation() == nullptr);
+  QVERIFY(!panel()->statistics().has_value());
+  undo().redo();
+  QVERIFY(deviation() != nullptr);
+  QVERIFY(panel()->statistics().has_value());
+  QCOMPARE(undo().count(), before);
+}
+
+void ErrorMapPanelTest::scallopTableMatchesTheBallFormula() {
+  QVERIFY(panel()->computeScallopTable());
+  // Seven simulations of a fine ball mesh: allow for a busy machine.
+  QVERIFY(f_.window->waitForJobs(300'000));
+  QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
+  const auto& rows = panel()->scallopRows();
+  QCOMPARE(rows.size(), ErrorMapPanel::defaultScallopCases().size());
+  // Ball R5, passes 1 mm apart on a plane: h = R - sqrt(R^2 - w^2/4).
+  const double exact = 5.0 - std::sqrt(25.0 - 0.25);
+  QVERIFY(std::abs(rows[0].predictedMm - exact) < 1e-12);
+  QVERIFY2(std::abs(rows[0].simulatedMm - exact) < 0.1 * exact,
+           qPrintable(QString::number(rows[0].simulatedMm)));
+  auto* table = f_.window->findChild<QTableWidget*>("scallopTable");
+  QVERIFY(table != nullptr);
+  QCOMPARE(table->rowCount(), static_cast<int>(rows.size()));
+}
+
+QTEST_MAIN(ErrorMapPanelTest)
+#include "error_map_panel_test.moc"

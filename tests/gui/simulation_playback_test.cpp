@@ -1,0 +1,245 @@
+// SPDX-License-Identifier: MIT
+// Simulation playback under Xvfb: play a demo path to the end and see the groove, undo it,
+// pause and step one pose, cancel, the tool at the current pose, collisions listed and marked.
+#include "frame_checks.h"
+#include "simulation_fixture.h"
+#include "workbench_test.h"
+
+#include <ddfcam/gui/document.h>
+#include <ddfcam/gui/document_command.h>
+#include <ddfcam/gui/panels/simulation_panel.h>
+#include <ddfcam/gui/panels/simulation_playback.h>
+#include <ddfcam/gui/part_scene.h>
+#include <ddfcam/gui/part_view.h>
+#include <ddfcam/gui/tool_overlay.h>
+#include <ddfcam/gui/vtk_view.h>
+#include <ddfcam/planning/path_simulation.h>
+
+#include <QDockWidget>
+#include <QLabel>
+#include <QListWidget>
+#include <QUndoStack>
+#include <QtTest/QtTest>
+
+#include <vtkPolyData.h>
+
+#include <algorithm>
+#include <cmath>
+
+using ddfcam::gui::SimulationPlayback;
+using ddfcam::planning::Tool;
+
+class SimulationPlaybackTest : public ddfcam::test::WorkbenchTest {
+  Q_OBJECT
+
+ private:
+  SimulationPlayback& playback() {
+    return f_.window->findChild<ddfcam::gui::SimulationPanel*>()->playback();
+  }
+  ddfcam::gui::PartScene& scene() { return f_.window->partView().scene(); }
+  QUndoStack& undo() { return *f_.window->document().undoStack(); }
+  void loadDemo(std::vector<double> passX = {20.0}) {
+    demo_ = ddfcam::test::smallDemo(std::move(passX));
+    load(demo_.project);
+    f_.script.errors.clear();
+    playback().setPathIndex(0);
+  }
+  /// Bounds of the tool's cutting mesh at @p pose (library mesh, Eigen transform).
+  static std::array<double, 6> toolBounds(const Tool& tool, const Eigen::Isometry3d& pose) {
+    const auto mesh = ddfcam::planning::toolMesh(tool).transformed(pose);
+    Eigen::Vector3d lo = mesh.vertices.front(), hi = lo;
+    for (const auto& v : mesh.vertices) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+    return {lo.x(), hi.x(), lo.y(), hi.y(), lo.z(), hi.z()};
+  }
+  bool toolOverlayAt(int pose) {
+    if (!scene().hasOverlay(ddfcam::gui::kToolCuttingOverlay)) return false;
+    double b[6];
+    scene().overlayData(ddfcam::gui::kToolCuttingOverlay)->GetBounds(b);
+    const auto expected = toolBounds(project().tools[0], project().paths[0].poses[pose].pose);
+    for (int i = 0; i < 6; ++i)
+      if (std::abs(b[i] - expected[i]) > 1e-4) return false;
+    return true;
+  }
+
+  ddfcam::test::SmallDemo demo_;
+
+ private slots:
+  void initTestCase() { QVERIFY(openWorkbench(false)); }
+  void playToTheEndCutsTheGrooveAndUndoRestores();
+  void pauseAndStepAdvanceOnePose();
+  void cancelLeavesTheDocumentUnchanged();
+  void collisionsAreListedAndMarked();
+};
+
+void SimulationPlaybackTest::playToTheEndCutsTheGrooveAndUndoRestores() {
+  loadDemo({16.0, 24.0});
+  const std::vector<float> stock = project().part->allHeights();
+  const int count = undo().count();
+  playback().setPosesPerSecond(0);  // as fast as the frame budget allows
+  QVERIFY(playback().play());
+  QVERIFY(playback().isPlaying());
+  QTRY_VERIFY_WITH_TIMEOUT(!playback().isActive(), 30'000);
+  QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
+  QCOMPARE(undo().count(), count + 1);
+  QCOMPARE(project().states.size(), std::size_t{1});
+  QCOMPARE(project().states[0].name, std::string("after demo passes"));
+  QCOMPARE(project().states[0].heights, project().part->allHeights());
+  // Oracle 1: the same path ground by planning::simulatePath on a copy of the stock.
+  ddfcam::ddf::DisplacementField copy = *demo_.project.part;
+  ddfcam::planning::simulatePath(copy, demo_.project.tools[0], demo_.project.paths[0]);
+  const auto& after = project().part->allHeights();
+  double worst = 0.0;
+  for (std::size_t i = 0; i < after.size(); ++i)
+    worst = std::max(worst, std::abs(double(after[i]) - double(copy.allHeights()[i])));
+  QVERIFY2(worst < 1e-6, qPrintable(QString::number(worst)));
+  // Oracle 2 (analytic): the roll is sunk 0.02 mm below the design at every contact, and its
+  // mesh has a vertex on its lowest line. Raster points on a contact line within 0.08 mm
+  // (along the feed) of a contact lie 0.02 mm below the design up to the rise of the roll's
+  // 48-gon there (< 0.005 mm); every point of the line lies below the design by at least
+  // 0.02 mm minus the feed scallop (0.5^2 / 8 (1/R + 1/12 mm)) and the 48-gon's chord error
+  // R (1 - cos(pi / 48)). Far from the passes the stock is untouched.
+  const auto& part = *project().part;
+  const int n = part.raster().steps();
+  const auto& design = dynamic_cast<const ddfcam::ddf::HeightFieldSurface&>(*demo_.design);
+  const double radius = demo_.project.tools[0].radiusMm;
+  const double rise = 0.25 / 8.0 * (1.0 / radius + 1.0 / 12.0) +
+                      radius * (1.0 - std::cos(M_PI / demo_.project.tools[0].segments));
+  double nearLo = 1e9, nearHi = -1e9, lineHi = -1e9;
+  std::size_t nearCount = 0, far = 0, farChanged = 0;
+  for (int f = 0; f < part.faceCount(); ++f)
+    for (int k = 0; k <= n; ++k)
+      for (int i = 0; i + k <= n; ++i) {
+        const auto q = part.surfacePoint(f, i, k);
+        const double dz = q.z() - design.pointAbove(q.x(), q.y()).z();
+        const bool inLine = std::min(std::abs(q.x() - 16.0), std::abs(q.x() - 24.0)) < 0.15;
+        if (inLine && q.y() > 8.0 && q.y() < 22.0) {
+          lineHi = std::max(lineHi, dz);
+          const double toContact = std::abs(q.y() - 6.0 - 0.5 * std::round((q.y() - 6.0) / 0.5));
+          if (toContact < 0.08) {
+            ++nearCount;
+            nearLo = std::min(nearLo, dz);
+            nearHi = std::max(nearHi, dz);
+          }
+        }
+        if (q.x() < 8.0 || q.y() < 3.0) {
+          ++far;
+          const std::size_t at = f * part.pointsPerFace() + part.raster().index(i, k);
+          if (after[at] != stock[at]) ++farChanged;
+        }
+      }
+  QVERIFY(nearCount > 10);
+  QVERIFY2(nearLo > -0.02 - 0.002 && nearHi < -0.02 + 0.005,
+           qPrintable(QString("groove depth at contacts %1 .. %2 mm").arg(nearLo).arg(nearHi)));
+  QVERIFY2(lineHi < -0.02 + rise + 0.002,
+           qPrintable(QString("groove line up to %1 mm, rise %2").arg(lineHi).arg(rise)));
+  QVERIFY(far > 100);
+  QCOMPARE(farChanged, std::size_t{0});
+  // Removed volume per pass listed.
+  auto* removal = f_.window->findChild<QListWidget*>("removalList");
+  QCOMPARE(removal->count(), 2);
+  QVERIFY(removal->item(1)->text().startsWith("pass 2"));
+  f_.window->view()->viewFrom(ddfcam::gui::ViewDirection::PlusZ);
+  ddfcam::test::dumpFrame(f_.window->view()->renderImage(), "playback_groove");
+  undo().undo();
+  QCOMPARE(project().part->allHeights(), stock);
+  QVERIFY(project().states.empty());
+}
+
+void SimulationPlaybackTest::pauseAndStepAdvanceOnePose() {
+  loadDemo();
+  QVERIFY(playback().step());
+  QCOMPARE(playback().simulation()->nextPose(), 1);
+  QVERIFY(toolOverlayAt(0));
+  QVERIFY(playback().step());
+  QCOMPARE(playback().simulation()->nextPose(), 2);
+  QCOMPARE(playback().shownPose(), 1);
+  QVERIFY(toolOverlayAt(1));
+  playback().setPosesPerSecond(30);
+  QVERIFY(playback().play());
+  QTRY_VERIFY_WITH_TIMEOUT(playback().simulation()->nextPose() >= 5, 5'000);
+  playback().pause();
+  QVERIFY(!playback().isPlaying());
+  const int paused = playback().simulation()->nextPose();
+  QVERIFY(paused < static_cast<int>(project().paths[0].poses.size()));
+  QTest::qWait(200);
+  QCOMPARE(playback().simulation()->nextPose(), paused);
+  QVERIFY(playback().step());
+  QCOMPARE(playback().simulation()->nextPose(), paused + 1);
+  QVERIFY(toolOverlayAt(paused));
+  auto* status = f_.window->findChild<QLabel*>("playbackStatus");
+  QVERIFY2(status->text().startsWith(QString("Pose %1 of %2").arg(paused + 1).arg(37)),
+           qPrintable(status->text()));
+  // The live surface: the view shows the simulated part, not the document's.
+  ddfcam::test::dumpFrame(f_.window->view()->renderImage(), "playback_paused");
+  // Apply commits the poses cut so far.
+  const int count = undo().count();
+  QVERIFY(playback().apply());
+  QCOMPARE(undo().count(), count + 1);
+  QCOMPARE(project().states.back().name,
+           "after demo passes (poses 1-" + std::to_string(paused + 1) + " of 37)");
+  QVERIFY(!playback().isActive());
+}
+
+void SimulationPlaybackTest::cancelLeavesTheDocumentUnchanged() {
+  loadDemo();
+  const std::vector<float> stock = project().part->allHeights();
+  const long long shownCells = scene().cellCount(ddfcam::gui::Layer::Surface);
+  const int count = undo().count();
+  for (int i = 0; i < 6; ++i) QVERIFY(playback().step());
+  QCOMPARE(project().part->allHeights(), stock);  // the playback cuts a copy
+  playback().cancel();
+  QVERIFY(!playback().isActive());
+  QCOMPARE(project().part->allHeights(), stock);
+  QCOMPARE(undo().count(), count);
+  QVERIFY(project().states.empty());
+  QCOMPARE(scene().cellCount(ddfcam::gui::Layer::Surface), shownCells);
+  QVERIFY(!scene().hasOverlay(ddfcam::gui::kCollisionOverlay));
+  // Back to the selected path's tool at its first pose.
+  QVERIFY(toolOverlayAt(0));
+  // A document edit during playback cancels it (the playback's copy would be stale).
+  QVERIFY(playback().step());
+  f_.window->document().push(
+      std::make_unique<ddfcam::gui::SetHeightsCommand>(f_.window->document(), "edit", stock));
+  QVERIFY(!playback().isActive());
+  QVERIFY(f_.script.errors.isEmpty());
+}
+
+void SimulationPlaybackTest::collisionsAreListedAndMarked() {
+  // Flanges of radius 4.9 mm against the side faces of the 5 mm roll: the roll sinks 0.22 mm
+  // into the stock, so the flanges (0.1 mm inside the rim) reach into the material.
+  auto demo = ddfcam::test::smallDemo();
+  demo.project.tools[0].holderRadiusMm = 4.9;
+  demo.project.tools[0].holderLengthMm = 1.0;
+  demo_ = demo;
+  load(demo.project);
+  playback().setPathIndex(0);
+  for (int i = 0; i < 8; ++i) QVERIFY(playback().step());
+  const auto& report = playback().simulation()->report();
+  QVERIFY(!report.collisions.empty());
+  auto* list = f_.window->findChild<QListWidget*>("collisionList");
+  QCOMPARE(list->count(), static_cast<int>(report.collisions.size()));
+  QCOMPARE(scene().overlayCellCount(ddfcam::gui::kCollisionOverlay),
+           static_cast<long long>(report.collisions.size()));
+  auto* label = f_.window->findChild<QLabel*>("collisionLabel");
+  QVERIFY2(label->text().startsWith(QString("Collisions: %1 poses").arg(report.collisions.size())),
+           qPrintable(label->text()));
+  QVERIFY(scene().hasOverlay(ddfcam::gui::kToolNonCuttingOverlay));
+  f_.window->view()->viewFrom(ddfcam::gui::ViewDirection::Isometric);
+  ddfcam::test::dumpFrame(f_.window->view()->renderImage(), "playback_collisions");
+  auto* panel = f_.window->findChild<ddfcam::gui::SimulationPanel*>();
+  QVERIFY(raisePanel("simulation"));
+  ddfcam::test::dumpFrame(panel->grab().toImage(), "playback_panel");
+  playback().cancel();
+  // Without a non-cutting part nothing collides.
+  loadDemo();
+  for (int i = 0; i < 8; ++i) QVERIFY(playback().step());
+  QVERIFY(playback().simulation()->report().collisions.empty());
+  QCOMPARE(list->count(), 0);
+  playback().cancel();
+}
+
+QTEST_MAIN(SimulationPlaybackTest)
+#include "simulation_playback_test.moc"
