@@ -203,8 +203,30 @@ TEST(SpacingRefinement, BallOnTorusMatchesIsoScallopCount) {
                         torusCase(ball(), 0.05, *scallopSpacingMm(kBallRadius, 0.1, 0.05), 15));
 }
 
-// No flat wheel in the concave cylinder: an uncrowned wheel gouges a concave cross-section
-// (oracles note), so there is no iso-scallop count to meet.
+TEST(SpacingRefinement, FlatWheelInConcaveCylinderAroundTheBoreStepsByItsWidth) {
+  // An uncrowned wheel fed along the bore's axis would gouge the concave cross-section (oracles
+  // note); fed around the bore, with its axis along the straight generators, its R = 5 mm rim
+  // fits the rho = 20 mm circle along the feed and the cross-feed section is straight: the step
+  // is the width. Arc of 2 mm around the bore (feed), 20 mm along the axis (transverse); a
+  // raster of 1/16 mm resolves the edges of the step-shaped grooves.
+  constexpr double rho = 20.0;
+  auto surface = std::make_shared<ddf::CylinderSurface>(rho);
+  Case c{gridPatch(
+             surface,
+             [&](double a, double b) {
+               const double phi = a * 2.0 / rho;
+               return Vec3(rho * std::cos(phi), rho * std::sin(phi), 20.0 * b);
+             },
+             [](const Vec3& p) -> Vec3 { return -Vec3(p.x(), p.y(), 0.0).normalized(); }, 1, 10,
+             33, 2.0),
+         [](const Vec3& p) { return Vec3(-p.y(), p.x(), 0.0).normalized(); },
+         flatRoll(1.2),
+         0.02,
+         20.0,
+         1.2,
+         -1.0};
+  expectIsoScallopCount("flat wheel/concave cylinder", c);
+}
 
 TEST(SpacingRefinement, FlatWheelOnPlaneStepsByItsWidth) {
   // A straight generator on a plane: no form error across the wheel, the step is the width.
