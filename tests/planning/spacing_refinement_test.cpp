@@ -217,8 +217,8 @@ TEST(SpacingRefinement, FlatWheelInConcaveCylinderAroundTheBoreStepsByItsWidth) 
                const double phi = a * 2.0 / rho;
                return Vec3(rho * std::cos(phi), rho * std::sin(phi), 20.0 * b);
              },
-             [](const Vec3& p) -> Vec3 { return -Vec3(p.x(), p.y(), 0.0).normalized(); }, 1, 10,
-             33, 2.0),
+             [](const Vec3& p) -> Vec3 { return -Vec3(p.x(), p.y(), 0.0).normalized(); }, 1, 10, 33,
+             2.0),
          [](const Vec3& p) { return Vec3(-p.y(), p.x(), 0.0).normalized(); },
          flatRoll(1.2),
          0.02,
