@@ -2,6 +2,7 @@
 // ddfcam-cli simulate: command-line options, the tool, and the tool path from a tool-path CSV.
 #include "simulate_inputs.h"
 
+#include <ddfcam/ddf/surface_locator.h>
 #include <ddfcam/ddf/surface_sampling.h>
 #include <ddfcam/error.h>
 #include <ddfcam/io/tool_library_file.h>
@@ -192,45 +193,14 @@ std::string rowName(const io::ToolPathCsvRow& r) {
 }
 
 // Crust boxes of the faces (vertices +- vectors), grown by a tenth of the longest vector.
-std::vector<Eigen::AlignedBox3d> crustBoxes(const ddf::DisplacementField& ddf) {
-  std::vector<Eigen::AlignedBox3d> boxes(ddf.faceCount());
-  for (int f = 0; f < ddf.faceCount(); ++f) {
-    double longest = 0.0;
-    for (int v : ddf.faceVertices(f)) {
-      boxes[f].extend(ddf.position(v) + ddf.vector(v));
-      boxes[f].extend(ddf.position(v) - ddf.vector(v));
-      longest = std::max(longest, ddf.vector(v).norm());
-    }
-    boxes[f].min().array() -= 0.1 * longest;
-    boxes[f].max().array() += 0.1 * longest;
-  }
-  return boxes;
-}
-
-std::optional<ddf::SurfaceLocation> locate(const ddf::DisplacementField& ddf,
-                                           const std::vector<Eigen::AlignedBox3d>& boxes,
-                                           const ddf::Vec3& p) {
-  std::optional<ddf::SurfaceLocation> best;
-  double bestDistance = std::numeric_limits<double>::infinity();
-  for (int f = 0; f < ddf.faceCount(); ++f) {
-    if (!boxes[f].contains(p)) continue;
-    const auto location = ddf::locateOnFace(ddf, f, p);
-    if (location && (location->point - p).norm() < bestDistance) {
-      bestDistance = (location->point - p).norm();
-      best = location;
-    }
-  }
-  return best;
-}
-
 CsvPath resampled(const CutRows& rows, const std::vector<ddf::Vec3>& contacts,
                   const ddf::DisplacementField& goal, const SimulateOptions& o,
                   const std::string& source) {
-  const std::vector<Eigen::AlignedBox3d> boxes = crustBoxes(goal);
+  const ddf::SurfaceLocator locator(goal);
   std::vector<std::vector<ddf::SurfaceLocation>> passes;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (i == 0 || rows[i - 1]->path != rows[i]->path) passes.emplace_back();
-    const auto location = locate(goal, boxes, contacts[i]);
+    const auto location = locator.locate(contacts[i]);
     if (!location)
       throw InvalidInput("simulate: " + source + ": " + rowName(*rows[i]) +
                          ": contact does not lie on the part");

@@ -2,6 +2,7 @@
 // ddfcam: error maps: signed normal deviation per raster point, raster point areas, path samples.
 #include "error_region.h"
 
+#include <ddfcam/ddf/surface_locator.h>
 #include <ddfcam/error.h>
 #include <ddfcam/planning/error_map.h>
 
@@ -94,41 +95,6 @@ void checkSameSupport(const ddf::DisplacementField& a, const ddf::DisplacementFi
   }
 }
 
-// Crust boxes (vertices +- vectors, grown by a tenth of the longest vector) of all faces.
-std::vector<Eigen::AlignedBox3d> crustBoxes(const ddf::DisplacementField& ddf) {
-  std::vector<Eigen::AlignedBox3d> boxes(ddf.faceCount());
-  for (int f = 0; f < ddf.faceCount(); ++f) {
-    double longest = 0.0;
-    for (int v : ddf.faceVertices(f)) {
-      boxes[f].extend(ddf.position(v) + ddf.vector(v));
-      boxes[f].extend(ddf.position(v) - ddf.vector(v));
-      longest = std::max(longest, ddf.vector(v).norm());
-    }
-    boxes[f].min().array() -= 0.1 * longest;
-    boxes[f].max().array() += 0.1 * longest;
-  }
-  return boxes;
-}
-
-// The location nearest to p among the V-projections onto the faces whose crust box holds p.
-std::optional<ddf::SurfaceLocation> locateContact(const ddf::DisplacementField& ddf,
-                                                  const std::vector<Eigen::AlignedBox3d>& boxes,
-                                                  const Vec3& p) {
-  std::optional<ddf::SurfaceLocation> best;
-  double bestDistance = std::numeric_limits<double>::infinity();
-  for (int f = 0; f < ddf.faceCount(); ++f) {
-    if (!boxes[f].contains(p)) continue;
-    const auto location = ddf::locateOnFace(ddf, f, p);
-    if (!location) continue;
-    const double distance = (location->point - p).norm();
-    if (distance < bestDistance) {
-      bestDistance = distance;
-      best = location;
-    }
-  }
-  return best;
-}
-
 }  // namespace
 
 ScalarField deviationMap(const ddf::DisplacementField& produced,
@@ -200,7 +166,7 @@ std::vector<PathDeviationSample> deviationAlongPath(const ScalarField& deviation
   detail::checkFieldSize(ddf, deviation.values.size(), "deviationAlongPath: deviation");
   std::vector<PathDeviationSample> out;
   out.reserve(path.poses.size());
-  const std::vector<Eigen::AlignedBox3d> boxes = crustBoxes(ddf);
+  const ddf::SurfaceLocator locator(ddf);
   double arc = 0.0;
   int pass = 0;
   for (std::size_t p = 0; p < path.poses.size(); ++p) {
@@ -210,7 +176,7 @@ std::vector<PathDeviationSample> deviationAlongPath(const ScalarField& deviation
     if (newPass && p > 0) ++pass;
     if (p > 0 && !newPass) arc += (contact - path.poses[p - 1].contact).norm();
     PathDeviationSample sample{pass, arc, contact, std::numeric_limits<double>::quiet_NaN()};
-    if (const auto location = locateContact(ddf, boxes, contact)) {
+    if (const auto location = locator.locate(contact)) {
       sample.deviationMm =
           ddf::interpolateOnFace(ddf, deviation.values, location->face, location->bary);
     }
