@@ -3,7 +3,7 @@
 // direction strokes stored in a region plan, and Escape cancelling a brush stroke
 // (scallop-tolerance coverage: streamlines_panel_scallop_test.cpp).
 #include "frame_checks.h"
-#include "workbench_fixture.h"
+#include "workbench_test.h"
 
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/gui/app_setup.h>
@@ -75,16 +75,12 @@ double angleOf(const Vec3& p) {
 
 }  // namespace
 
-class StreamlinesPanelMethodsTest : public QObject {
+class StreamlinesPanelMethodsTest : public ddfcam::test::WorkbenchTest {
   Q_OBJECT
-
- public:
-  static void initMain() { ddfcam::gui::setDefaultSurfaceFormat(); }
 
  private slots:
   void initTestCase();
   void init();
-  void cleanup() { QCOMPARE(ddfcam::gui::VtkErrorMonitor::errorCount(), 0); }
   void eachMethodTracesCirclesAndRulings();
   void familyUsesTheChosenMethod();
   void regionStrokesLiveInThePlanAndUndo();
@@ -94,29 +90,12 @@ class StreamlinesPanelMethodsTest : public QObject {
  private:
   StreamlinesPanel& panel() { return *f_.window->findChild<StreamlinesPanel*>(); }
   SegmentationPanel& segmentation() { return *f_.window->findChild<SegmentationPanel*>(); }
-  const ddfcam::planning::Project& project() const { return f_.window->document().project(); }
   QUndoStack& undo() { return *f_.window->document().undoStack(); }
   ddfcam::gui::PartScene& scene() { return f_.window->partView().scene(); }
-  void load(ddfcam::planning::Project project) {
-    f_.window->document().reset(std::move(project));
-    QVERIFY(f_.window->waitForJobs());
-  }
-  void waitOk() {
-    QVERIFY(f_.window->waitForJobs(60'000));
-    QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
-  }
-  void raise(const char* dock) {
-    if (auto* d = f_.window->findChild<QDockWidget*>(dock)) d->raise();
-    QApplication::processEvents();
-  }
-
-  ddfcam::test::WorkbenchFixture f_;
 };
 
 void StreamlinesPanelMethodsTest::initTestCase() {
-  ddfcam::gui::VtkErrorMonitor::install();
-  QVERIFY(f_.dir.isValid());
-  QVERIFY(f_.open(false));
+  QVERIFY(openWorkbench(false));
 }
 
 void StreamlinesPanelMethodsTest::init() {
@@ -327,7 +306,7 @@ void StreamlinesPanelMethodsTest::escapeCancelsABrushStroke() {
   auto cylinder = cylinderProject();
   cylinder.regions.push_back(frontHalf(*cylinder.part));
   load(std::move(cylinder));
-  raise("panel_segmentation");
+  QVERIFY(raisePanel("segmentation"));
   auto& view = *f_.window->view();
   view.viewFrom(ddfcam::gui::ViewDirection::PlusY);  // the region (x > 0) on the left
   view.renderImage();

@@ -3,7 +3,7 @@
 // lines by the scallop-height formula with a ball, and falls back to the fixed spacing with a
 // straight roll.
 #include "frame_checks.h"
-#include "workbench_fixture.h"
+#include "workbench_test.h"
 
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/ddf/analytic_surface.h>
@@ -79,38 +79,15 @@ Gaps rulingGaps(const ddfcam::planning::ToolPath& path) {
 
 }  // namespace
 
-class StreamlinesPanelScallopTest : public QObject {
+class StreamlinesPanelScallopTest : public ddfcam::test::WorkbenchTest {
   Q_OBJECT
 
- public:
-  static void initMain() { ddfcam::gui::setDefaultSurfaceFormat(); }
-
  private slots:
-  void initTestCase() {
-    ddfcam::gui::VtkErrorMonitor::install();
-    QVERIFY(f_.dir.isValid());
-    QVERIFY(f_.open(false));
-  }
-  void cleanup() { QCOMPARE(ddfcam::gui::VtkErrorMonitor::errorCount(), 0); }
+  void initTestCase() { QVERIFY(openWorkbench(false)); }
   void scallopToleranceSpacingFollowsTheCurvature();
 
  private:
   StreamlinesPanel& panel() { return *f_.window->findChild<StreamlinesPanel*>(); }
-  const ddfcam::planning::Project& project() const { return f_.window->document().project(); }
-  void load(ddfcam::planning::Project project) {
-    f_.window->document().reset(std::move(project));
-    QVERIFY(f_.window->waitForJobs());
-  }
-  void waitOk() {
-    QVERIFY(f_.window->waitForJobs(60'000));
-    QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
-  }
-  void raise(const char* dock) {
-    if (auto* d = f_.window->findChild<QDockWidget*>(dock)) d->raise();
-    QApplication::processEvents();
-  }
-
-  ddfcam::test::WorkbenchFixture f_;
 };
 
 // Cover a flat-then-convex part with a ScallopTolerance plan along y: with a ball the gaps
@@ -174,7 +151,7 @@ void StreamlinesPanelScallopTest::scallopToleranceSpacingFollowsTheCurvature() {
   for (double g : gaps.flat)
     QVERIFY2(std::abs(g - fixedMm) < 0.05 * fixedMm, qPrintable(QString::number(g)));
   ddfcam::test::dumpFrame(f_.window->view()->renderImage(), "streamlines_scallop_roll");
-  raise("panel_streamlines");
+  QVERIFY(raisePanel("streamlines"));
   ddfcam::test::dumpFrame(panel().grab().toImage(), "streamlines_scallop_panel");
 }
 

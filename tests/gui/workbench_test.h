@@ -43,6 +43,7 @@ class WorkbenchTest : public QObject {
   bool raisePanel(const QString& id) {
     auto* dock = f_.window->findChild<QDockWidget*>("panel_" + id);
     if (dock) dock->raise();
+    QApplication::processEvents();
     return dock != nullptr;
   }
   /// Waits for the jobs and checks that no error dialog was shown.
