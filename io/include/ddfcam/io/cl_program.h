@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: MIT
+// ddfcam: a cutter-location program, the tool path as exchanged with CAM systems, posts and robots.
+#pragma once
+
+#include <ddfcam/ddf/support_mesh.h>
+#include <ddfcam/planning/path_linking.h>
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ddfcam::io {
+
+/// @brief Length unit of a path file. Programs hold millimetres; readers convert, writers
+/// convert back.
+enum class LengthUnit {
+  Millimetre,  ///< mm (feeds in mm/min)
+  Inch,        ///< inch (feeds in inch/min)
+  Metre        ///< m, as robot frameworks write (feeds in m/min)
+};
+
+/// @brief Millimetres in one @p unit: 1, 25.4 or 1000.
+double millimetresPer(LengthUnit unit);
+
+/// @brief Short name of @p unit as written in headers and messages: "mm", "in" or "m".
+std::string_view lengthUnitName(LengthUnit unit);
+
+/// @brief Which point of the tool a program's positions give.
+enum class ClPointKind {
+  Contact,       ///< the point meant to touch the design surface
+  ToolReference  ///< origin of the tool frame (planning::ToolKind): cutters' tip on the axis
+                 ///< (APT's CL point), wheels' centre, a bare ball's centre
+};
+
+/// @brief One point of a program: the end point of a straight move from the previous point.
+/// Part (program) frame, millimetres.
+struct ClPoint {
+  int path = 0;                              ///< 0-based pass / move index the point belongs to
+  int point = 0;                             ///< 0-based index of the point within its path
+  ddf::Vec3 positionMm = ddf::Vec3::Zero();  ///< contact or reference point (ClProgram::pointKind)
+  /// Unit tool axis if the file gives one: the spindle (rotation) axis, for cutters from the
+  /// tip towards the holder (APT's i,j,k); wheels' rotation axis. Empty: 3-axis, or unknown.
+  std::optional<ddf::Vec3> axis;
+  std::optional<ddf::Vec3> normal;  ///< unit surface normal at the contact, tool side, if given
+  double feedMmPerMin = 0.0;        ///< feed, mm/min; 0 for rapid moves or when the file gives none
+  planning::MoveKind move = planning::MoveKind::Cut;  ///< cut, link or rapid
+  int sourceLine = 0;  ///< 1-based line of the file the point was read from; 0 if not read
+
+  bool operator==(const ClPoint&) const = default;
+};
+
+/// @brief APT's 7-parameter cutter description CUTTER/d,r,e,f,alpha,beta,h (lengths in mm,
+/// angles in degrees): d diameter, r corner radius, e and f the corner centre's radial and axial
+/// offsets, alpha the bottom angle, beta the side taper, h the height.
+struct ClCutter {
+  double diameterMm = 0.0;      ///< d, mm
+  double cornerRadiusMm = 0.0;  ///< r, mm
+  double eMm = 0.0;             ///< e: radial distance of the corner centre from the axis, mm
+  double fMm = 0.0;             ///< f: axial height of the corner centre above the tip, mm
+  double alphaDeg = 0.0;        ///< alpha: bottom angle, degrees
+  double betaDeg = 0.0;         ///< beta: side taper angle, degrees
+  double heightMm = 0.0;        ///< h: cutting height, mm
+
+  bool operator==(const ClCutter&) const = default;
+};
+
+/// @brief A diagnostic tied to a line of the file it was read from.
+struct ClMessage {
+  int line = 0;      ///< 1-based source line; 0 if none
+  std::string text;  ///< what was noticed, e.g. "unknown record 'PAINT' kept as a comment"
+
+  bool operator==(const ClMessage&) const = default;
+};
+
+/// @brief A whole program: header data and points in machining order. Positions in mm in the
+/// program frame; the unit of the file is kept in sourceUnit for display and re-export.
+struct ClProgram {
+  std::string partName;                                ///< PARTNO, job or file name; may be empty
+  LengthUnit sourceUnit = LengthUnit::Millimetre;      ///< unit of the file read (or to write)
+  ClPointKind pointKind = ClPointKind::ToolReference;  ///< meaning of ClPoint::positionMm
+  int toolNumber = 1;                                  ///< LOADTL / T number, >= 0 (default 1)
+  std::string toolName;                                ///< tool name or description; may be empty
+  std::optional<ClCutter> cutter;                      ///< CUTTER record, if known
+  double spindleRpm = 0.0;                             ///< spindle speed, rpm; 0 if not given
+  bool spindleClockwise = true;                        ///< spindle direction (default CLW)
+  bool coolant = false;                                ///< coolant on during the cut
+  std::vector<ClPoint> points;                         ///< points in machining order
+  std::vector<std::string> comments;  ///< comments and records kept as comments, in file order
+  std::vector<ClMessage> warnings;    ///< what a reader noticed but could read past
+
+  /// True when some point carries a tool axis (a 5-axis program).
+  bool multiAxis() const;
+  /// Number of paths: 1 + the largest ClPoint::path, 0 when there are no points.
+  int pathCount() const;
+
+  bool operator==(const ClProgram&) const = default;
+};
+
+}  // namespace ddfcam::io
