@@ -92,7 +92,7 @@ struct PlanOptions {
   int smoothWindow = 0;
   bool fair = false;
   planning::LinkingOrder linking = planning::LinkingOrder::ZigZag;
-  io::CsvPointKind point = io::CsvPointKind::Contact;
+  io::ClPointKind point = io::ClPointKind::Contact;
   PlanTool tool;  ///< tool, placement and sampling along the lines
   double feedMmPerMin = 1000.0;
   int decimals = 6;
@@ -169,8 +169,8 @@ void parseLines(const Arguments& args, PlanOptions& o) {
 
 void parseOutput(const Arguments& args, PlanOptions& o) {
   static constexpr std::array<const char*, 2> kPoints = {"contact", "reference"};
-  o.point = choice(args, "point", kPoints, 0) == 0 ? io::CsvPointKind::Contact
-                                                   : io::CsvPointKind::ToolReference;
+  o.point = choice(args, "point", kPoints, 0) == 0 ? io::ClPointKind::Contact
+                                                   : io::ClPointKind::ToolReference;
   o.tool = parsePlanTool(args);
   o.feedMmPerMin = args.positiveNumber("feed").value_or(1000.0);
   o.decimals = args.integer("decimals", 6, 0, 17);
@@ -366,11 +366,11 @@ int runPlan(std::span<const std::string> words) {
   linking.clearanceMm = std::min(1.0, diagonal / 20.0);  // parts in metres are tiny in mm
   const PlacedProgram program = placeAndLink(part, lines, o.tool, o.feedMmPerMin, linking);
   const planning::LinkedPaths& linked = program.linked;
-  const io::ToolPathCsv table =
-      io::linkedToolPathCsvRows(linked, program.path, o.point, program.normals);
+  const io::ClProgram table =
+      io::clProgramFromLinked(linked, program.path, o.tool.tool, o.point, program.normals);
   io::writeToolPathCsv(table, o.output, {.decimals = o.decimals});
   t.paths = msSince(start);
-  printSummary(o, linked, table.rows.size(), spacing, t);
+  printSummary(o, linked, table.points.size(), spacing, t);
   printSampling(program);
   return 0;
 }

@@ -23,5 +23,6 @@ extern const Command kDemoCommand;
 extern const Command kCurvatureCommand;  // section C
 extern const Command kPlanCommand;       // section L
 extern const Command kSimulateCommand;   // section BV
+extern const Command kRunCommand;        // section JB
 
 }  // namespace ddfcam::cli

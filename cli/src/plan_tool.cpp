@@ -8,7 +8,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <string>
 #include <utility>
 
@@ -116,16 +115,6 @@ PlacedProgram placeAndLink(const ddf::DisplacementField& part,
     }
   }
   out.linked = planning::linkPaths(contacts, normals, linking);
-  const bool axisAlongX = tool.tool.kind == planning::ToolKind::CylinderRoll ||
-                          tool.tool.kind == planning::ToolKind::BeltContactWheel ||
-                          tool.tool.kind == planning::ToolKind::Sphere;
-  if (!axisAlongX) {
-    // A turn of -90 deg about tool y takes tool x to tool z.
-    const Eigen::Matrix3d toAxis =
-        Eigen::AngleAxisd(-std::numbers::pi / 2.0, ddf::Vec3::UnitY()).toRotationMatrix();
-    for (planning::PathPose& pose : out.path.poses)
-      pose.pose.linear() = pose.pose.linear() * toAxis;
-  }
   return out;
 }
 

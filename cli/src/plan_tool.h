@@ -34,15 +34,15 @@ PlanTool parsePlanTool(const Arguments& args);
 
 /// @brief Placed, linked lines ready for the CSV.
 struct PlacedProgram {
-  planning::ToolPath path;         ///< one pass per kept line, tool axis in the poses' x column
+  planning::ToolPath path;         ///< one pass per kept line, poses in the tool kind's frame
   std::vector<ddf::Vec3> normals;  ///< #poses unit surface normals (tool side)
   planning::LinkedPaths linked;    ///< the passes of path ordered and linked
   std::vector<planning::PassSampling> passes;  ///< per pass sampling; empty without sampling
 };
 
 /// @brief Places @p tool along @p lines (toolPathFromStreamlinesDetailed) and links the passes
-/// by their contacts and normals. The CSV writes pose.linear() x as the tool axis, so cutters'
-/// poses are turned about their own y axis to put their axis (+z) there (positions unchanged).
+/// by their contacts and normals. The poses keep the tool frames of planning/tool.h (the
+/// program builder takes each kind's spindle axis from them).
 /// @throws InvalidInput as toolPathFromStreamlines() and linkPaths().
 PlacedProgram placeAndLink(const ddf::DisplacementField& part,
                            const std::vector<planning::Streamline>& lines, const PlanTool& tool,

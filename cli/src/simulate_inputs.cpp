@@ -186,9 +186,9 @@ SimulateOptions parseSimulateOptions(std::span<const std::string> words) {
 
 namespace {
 
-using CutRows = std::vector<const io::ToolPathCsvRow*>;
+using CutRows = std::vector<const io::ClPoint*>;
 
-std::string rowName(const io::ToolPathCsvRow& r) {
+std::string rowName(const io::ClPoint& r) {
   return "row of path " + std::to_string(r.path) + " point " + std::to_string(r.point);
 }
 
@@ -219,23 +219,23 @@ CsvPath resampled(const CutRows& rows, const std::vector<ddf::Vec3>& contacts,
 // feed along the chord through the neighbours of the pass (the reference offset is the same
 // for both neighbours, so the chord of the raw points serves either CSV kind).
 ddf::Vec3 feedAt(const CutRows& rows, std::size_t i, const ddf::Vec3& n, bool wheel) {
-  const io::ToolPathCsvRow& r = *rows[i];
-  ddf::Vec3 feed = r.toolAxis.cross(n);
+  const io::ClPoint& r = *rows[i];
+  ddf::Vec3 feed = r.axis ? r.axis->cross(n) : ddf::Vec3::Zero();
   if (wheel && feed.norm() >= 1e-6) return feed;
   const bool passStart = i == 0 || rows[i - 1]->path != r.path;
   const bool passEnd = i + 1 == rows.size() || rows[i + 1]->path != r.path;
-  feed = (passEnd ? r.position : rows[i + 1]->position) -
-         (passStart ? r.position : rows[i - 1]->position);
+  feed = (passEnd ? r.positionMm : rows[i + 1]->positionMm) -
+         (passStart ? r.positionMm : rows[i - 1]->positionMm);
   if ((feed - feed.dot(n) * n).norm() < 1e-12) feed = n.unitOrthogonal();
   return feed;
 }
 
 }  // namespace
 
-CsvPath pathFromCsv(const io::ToolPathCsv& table, const ddf::DisplacementField& goal,
+CsvPath pathFromCsv(const io::ClProgram& table, const ddf::DisplacementField& goal,
                     const SimulateOptions& o, const std::string& source) {
   CutRows rows;
-  for (const io::ToolPathCsvRow& row : table.rows)
+  for (const io::ClPoint& row : table.points)
     if (row.move == planning::MoveKind::Cut) rows.push_back(&row);
   if (rows.empty()) throw InvalidInput("simulate: " + source + " has no cut rows");
   const bool wheel = o.tool.kind == planning::ToolKind::CylinderRoll ||
@@ -244,18 +244,19 @@ CsvPath pathFromCsv(const io::ToolPathCsv& table, const ddf::DisplacementField& 
   out.path.name = source;
   std::vector<ddf::Vec3> contacts;
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    const io::ToolPathCsvRow& r = *rows[i];
+    const io::ClPoint& r = *rows[i];
     const bool passStart = i == 0 || rows[i - 1]->path != r.path;
     if (passStart) out.path.passStarts.push_back(static_cast<int>(out.path.poses.size()));
-    const ddf::Vec3 n = r.normal.normalized();
-    if (!n.allFinite() || !r.position.allFinite())
+    const ddf::Vec3 n = r.normal ? r.normal->normalized()
+                                 : ddf::Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+    if (!n.allFinite() || !r.positionMm.allFinite())
       throw InvalidInput("simulate: " + source + ": " + rowName(r) + " has no usable normal");
     const ddf::Vec3 feed = feedAt(rows, i, n, wheel);
     const ddf::Vec3 contact =
-        table.pointKind == io::CsvPointKind::Contact
-            ? r.position
-            : ddf::Vec3(r.position -
-                        planning::placeToolDetailed(o.tool, r.position, n, feed, o.placement)
+        table.pointKind == io::ClPointKind::Contact
+            ? r.positionMm
+            : ddf::Vec3(r.positionMm -
+                        planning::placeToolDetailed(o.tool, r.positionMm, n, feed, o.placement)
                             .referenceOffset);
     contacts.push_back(contact);
     out.normals.push_back(n);

@@ -77,7 +77,7 @@ struct CsvPath {
 /// at the step of o.stepMm or of the tolerance o.sampleToleranceMm (default o.toleranceMm).
 /// @throws InvalidInput naming @p source for no cut rows, unusable normals or contacts that do
 /// not lie on @p goal.
-CsvPath pathFromCsv(const io::ToolPathCsv& table, const ddf::DisplacementField& goal,
+CsvPath pathFromCsv(const io::ClProgram& table, const ddf::DisplacementField& goal,
                     const SimulateOptions& o, const std::string& source);
 
 }  // namespace ddfcam::cli

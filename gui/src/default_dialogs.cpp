@@ -2,6 +2,9 @@
 // ddfcam gui: interactive defaults of WorkbenchDialogs.
 #include <ddfcam/gui/default_dialogs.h>
 
+#include <ddfcam/gui/path_export_dialog.h>
+#include <ddfcam/gui/path_import.h>
+
 #include <QFileDialog>
 #include <QInputDialog>
 #include <QMessageBox>
@@ -64,6 +67,28 @@ std::function<int(const QStringList&)> recoveryDialog(QPointer<QWidget> parent) 
   };
 }
 
+void addPathDialogs(WorkbenchDialogs& d, QPointer<QWidget> parent) {
+  if (!d.importPathFile)
+    d.importPathFile = [parent] {
+      return QFileDialog::getOpenFileName(parent, QObject::tr("Import tool path"), QString(),
+                                          pathFileFilter());
+    };
+  if (!d.exportPaths)
+    d.exportPaths = [parent](const planning::Project& project,
+                             const PathExportOptions& initial) -> std::optional<PathExportOptions> {
+      PathExportDialog dialog(project, initial, parent);
+      if (dialog.exec() != QDialog::Accepted) return std::nullopt;
+      return dialog.options();
+    };
+  if (!d.importPath)
+    d.importPath = [parent](const PathImportRequest& request,
+                            const PathImportOptions& initial) -> std::optional<PathImportOptions> {
+      PathImportDialog dialog(request, initial, parent);
+      if (dialog.exec() != QDialog::Accepted) return std::nullopt;
+      return dialog.options();
+    };
+}
+
 }  // namespace
 
 WorkbenchDialogs withDefaultDialogs(WorkbenchDialogs d, QWidget* parent) {
@@ -78,6 +103,7 @@ WorkbenchDialogs withDefaultDialogs(WorkbenchDialogs d, QWidget* parent) {
   if (!d.unsavedChanges) d.unsavedChanges = unsavedDialog(guarded);
   if (!d.offerRecovery) d.offerRecovery = recoveryDialog(guarded);
   if (!d.error) d.error = messageBoxReporter(parent);
+  addPathDialogs(d, guarded);
   return d;
 }
 

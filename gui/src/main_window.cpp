@@ -19,6 +19,8 @@
 #include <ddfcam/gui/panels/tools_panel.h>
 #include <ddfcam/gui/panels/streamlines_panel.h>
 #include <ddfcam/gui/part_scene.h>
+#include <ddfcam/gui/path_export_dialog.h>
+#include <ddfcam/gui/path_import.h>
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/plot_dock.h>
 #include <ddfcam/gui/recent_files.h>
@@ -170,6 +172,14 @@ bool MainWindow::openPath(const QString& path) {
   return projectActions_->openPath(path);
 }
 
+bool MainWindow::importPathFile(const QString& path) {
+  return gui::importPathFile(path, *document_, dialogs_, console_);
+}
+
+bool MainWindow::exportToolPaths() {
+  return exportPathsInteractively(document_->project(), dialogs_, *settings_, console_);
+}
+
 bool MainWindow::openDemo() {
   return projectActions_->openDemo();
 }
@@ -227,6 +237,18 @@ void MainWindow::createFileMenu() {
     if (const auto request = dialogs_.screenshot ? dialogs_.screenshot() : std::nullopt)
       saveScreenshot(request->path, request->size);
   });
+  file->addSeparator();
+  add(tr("&Import tool path..."), "actionImportPath", [this] {
+    const QString path = dialogs_.importPathFile ? dialogs_.importPathFile() : QString();
+    if (!path.isEmpty()) importPathFile(path);
+  });
+  QAction* exportPaths =
+      add(tr("&Export tool paths..."), "actionExportPaths", [this] { exportToolPaths(); });
+  auto enableExport = [this, exportPaths] {
+    exportPaths->setEnabled(!document_->project().paths.empty());
+  };
+  connect(document_.get(), &Document::changed, exportPaths, enableExport);
+  enableExport();
   file->addSeparator();
   add(
       tr("&Quit"), "actionQuit", [this] { close(); }, QKeySequence::Quit);
@@ -308,16 +330,23 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
   const auto urls = event->mimeData()->urls();
-  if (urls.size() == 1 && urls.front().isLocalFile() &&
-      ProjectActions::canOpen(urls.front().toLocalFile()))
-    event->acceptProposedAction();
+  if (urls.size() != 1 || !urls.front().isLocalFile()) return;
+  const QString path = urls.front().toLocalFile();
+  if (ProjectActions::canOpen(path) || isPathFile(path)) event->acceptProposedAction();
 }
 
 void MainWindow::dropEvent(QDropEvent* event) {
   const auto urls = event->mimeData()->urls();
   if (urls.size() != 1 || !urls.front().isLocalFile()) return;
   event->acceptProposedAction();
-  openPath(urls.front().toLocalFile());
+  const QString path = urls.front().toLocalFile();
+  // Tool-path files are placed on the open part; everything else opens as before.
+  if (!ProjectActions::canOpen(path) && isPathFile(path))
+    // After the drop returns: the import dialog is modal and the drag source waits for us.
+    QMetaObject::invokeMethod(
+        this, [this, path] { importPathFile(path); }, Qt::QueuedConnection);
+  else
+    openPath(path);
 }
 
 }  // namespace ddfcam::gui

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <ddfcam/gui/main_window.h>
+#include <ddfcam/gui/path_export_dialog.h>
+#include <ddfcam/gui/path_import.h>
 
 #include <QSettings>
 #include <QString>
@@ -24,6 +26,7 @@ struct ScriptedDialogs {
   int recoveryChoice = -1;
   QStringList offeredRecoveries;
   QStringList errors;
+  QString importPathFile;  ///< File > Import tool path's file; empty: cancelled
 
   gui::WorkbenchDialogs dialogs() {
     gui::WorkbenchDialogs d;
@@ -37,6 +40,14 @@ struct ScriptedDialogs {
     };
     d.error = [this](const QString& title, const QString& message) {
       errors << title + ": " + message;
+    };
+    // Path export and import (section GX): the option dialogs answer "cancel".
+    d.importPathFile = [this] { return importPathFile; };
+    d.exportPaths = [](const planning::Project&, const gui::PathExportOptions&) {
+      return std::optional<gui::PathExportOptions>();
+    };
+    d.importPath = [](const gui::PathImportRequest&, const gui::PathImportOptions&) {
+      return std::optional<gui::PathImportOptions>();
     };
     return d;
   }

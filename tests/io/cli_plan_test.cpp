@@ -45,9 +45,9 @@ PlanRun plan(const test::ScratchDir& dir, const std::vector<std::string>& args) 
 }
 
 /// Cut rows grouped by move (path column), in order.
-std::map<int, std::vector<ToolPathCsvRow>> cutsOf(const ToolPathCsv& table) {
-  std::map<int, std::vector<ToolPathCsvRow>> cuts;
-  for (const ToolPathCsvRow& row : table.rows)
+std::map<int, std::vector<ClPoint>> cutsOf(const ClProgram& table) {
+  std::map<int, std::vector<ClPoint>> cuts;
+  for (const ClPoint& row : table.points)
     if (row.move == planning::MoveKind::Cut) cuts[row.path].push_back(row);
   return cuts;
 }
@@ -65,23 +65,23 @@ TEST(CliPlan, CylinderLinesRunAlongTheAxisAtTheRequestedSpacing) {
                                  "--spacing", "2.5", "--decimals", "9", "--seeding", "transverse"});
   ASSERT_EQ(run.exitCode, 0) << run.err;
   EXPECT_THAT(run.out, HasSubstr("cutting length"));
-  const ToolPathCsv table = readToolPathCsv(dir / "p.csv");
+  const ClProgram table = readToolPathCsv(dir / "p.csv");
   const auto cuts = cutsOf(table);
   ASSERT_GE(cuts.size(), 20u);  // 2 pi 10 / 2.5 = 25 lines around
   std::vector<double> angles;
   for (const auto& [move, rows] : cuts) {
-    const double angle = std::atan2(rows.front().position.y(), rows.front().position.x());
+    const double angle = std::atan2(rows.front().positionMm.y(), rows.front().positionMm.x());
     double zMin = 1e9, zMax = -1e9;
-    for (const ToolPathCsvRow& r : rows) {
+    for (const ClPoint& r : rows) {
       // On the cylinder (radius 10; the raster chords sag by < 2e-3 mm), on one generator.
-      EXPECT_NEAR(r.position.head<2>().norm(), 10.0, 2e-3) << "move " << move;
-      const double a = std::atan2(r.position.y(), r.position.x());
+      EXPECT_NEAR(r.positionMm.head<2>().norm(), 10.0, 2e-3) << "move " << move;
+      const double a = std::atan2(r.positionMm.y(), r.positionMm.x());
       EXPECT_NEAR(std::remainder(a - angle, 2 * std::numbers::pi), 0.0, 1e-6) << "move " << move;
       // Normal radial, roll axis around the cylinder (across the feed along z).
-      EXPECT_NEAR(r.normal.z(), 0.0, 1e-6);
-      EXPECT_NEAR(r.toolAxis.z(), 0.0, 1e-6);
-      zMin = std::min(zMin, r.position.z());
-      zMax = std::max(zMax, r.position.z());
+      EXPECT_NEAR(r.normal->z(), 0.0, 1e-6);
+      EXPECT_NEAR(r.axis->z(), 0.0, 1e-6);
+      zMin = std::min(zMin, r.positionMm.z());
+      zMax = std::max(zMax, r.positionMm.z());
     }
     EXPECT_NEAR(zMax - zMin, 30.0, 1e-6) << "move " << move;  // from one open end to the other
     angles.push_back(angle);
@@ -135,16 +135,16 @@ TEST(CliPlan, BallCentresSitOneRadiusOffTheCylinder) {
                                  "--linking",
                                  "one-way"});
   ASSERT_EQ(run.exitCode, 0) << run.err;
-  const ToolPathCsv table = readToolPathCsv(dir / "p.csv");
-  EXPECT_EQ(table.pointKind, CsvPointKind::ToolReference);
+  const ClProgram table = readToolPathCsv(dir / "p.csv");
+  EXPECT_EQ(table.pointKind, ClPointKind::ToolReference);
   const auto cuts = cutsOf(table);
   EXPECT_GE(cuts.size(), 20u);
   for (const auto& [move, rows] : cuts)
-    for (const ToolPathCsvRow& r : rows) {
+    for (const ClPoint& r : rows) {
       // Ball centre = contact + 3 mm along the outward normal; contacts on the radius-10
       // cylinder up to the raster sag and the smoothing's chord error (< 0.01 mm here).
-      EXPECT_NEAR(r.position.head<2>().norm(), 13.0, 0.01) << "move " << move;
-      EXPECT_NEAR(r.normal.dot(ddf::Vec3(r.position.x(), r.position.y(), 0).normalized()), 1.0,
+      EXPECT_NEAR(r.positionMm.head<2>().norm(), 13.0, 0.01) << "move " << move;
+      EXPECT_NEAR(r.normal->dot(ddf::Vec3(r.positionMm.x(), r.positionMm.y(), 0).normalized()), 1.0,
                   1e-3);
       EXPECT_EQ(r.feedMmPerMin, 1000.0);
     }
@@ -200,16 +200,16 @@ void checkBallEndSpacing(double toleranceMm, double stepMm) {
   ASSERT_GE(cuts.size(), 5u);
   const double lead = 10.0 * std::numbers::pi / 180.0;
   for (const auto& [move, rows] : cuts) {
-    const double length = (rows.back().position - rows.front().position).norm();
+    const double length = (rows.back().positionMm - rows.front().positionMm).norm();
     ASSERT_GT(length, 39.0) << "move " << move;  // the line crosses the whole plane
     const int k = static_cast<int>(std::ceil(length / stepMm - 1e-6));
     ASSERT_EQ(static_cast<int>(rows.size()), k + 1) << "move " << move;
     for (std::size_t i = 1; i < rows.size(); ++i)
-      EXPECT_NEAR((rows[i].position - rows[i - 1].position).norm(), length / k, 1e-6);
-    for (const ToolPathCsvRow& r : rows) {
-      EXPECT_LT((r.normal - ddf::Vec3::UnitZ()).norm(), 1e-9);
-      EXPECT_NEAR(std::abs(r.toolAxis.x()), std::sin(lead), 1e-6);  // leans towards the feed
-      EXPECT_NEAR(r.toolAxis.z(), std::cos(lead), 1e-6);
+      EXPECT_NEAR((rows[i].positionMm - rows[i - 1].positionMm).norm(), length / k, 1e-6);
+    for (const ClPoint& r : rows) {
+      EXPECT_LT((*r.normal - ddf::Vec3::UnitZ()).norm(), 1e-9);
+      EXPECT_NEAR(std::abs(r.axis->x()), std::sin(lead), 1e-6);  // leans towards the feed
+      EXPECT_NEAR(r.axis->z(), std::cos(lead), 1e-6);
     }
   }
 }
@@ -267,7 +267,7 @@ TEST(CliPlan, ScallopHeightSetsTheSpacingFromTheCrossFeedCurvature) {
   // Lines along generators; an even-seeded line may be cut into pieces: one angle per generator.
   std::vector<double> angles;
   for (const auto& [move, rows] : cuts)
-    angles.push_back(std::atan2(rows.front().position.y(), rows.front().position.x()));
+    angles.push_back(std::atan2(rows.front().positionMm.y(), rows.front().positionMm.x()));
   std::sort(angles.begin(), angles.end());
   std::vector<double> gaps;
   for (std::size_t i = 0; i < angles.size(); ++i) {
@@ -309,7 +309,7 @@ void planOnSharedMesh(const std::string& name, const std::vector<std::string>& o
   args.insert(args.end(), options.begin(), options.end());
   const PlanRun run = plan(dir, args);
   ASSERT_EQ(run.exitCode, 0) << run.err;
-  const ToolPathCsv table = readToolPathCsv(dir / "p.csv");
+  const ClProgram table = readToolPathCsv(dir / "p.csv");
   const auto cuts = cutsOf(table);
   ASSERT_FALSE(cuts.empty());
   const ddf::TriangleMesh triangles = readMesh(mesh);
@@ -318,7 +318,7 @@ void planOnSharedMesh(const std::string& name, const std::vector<std::string>& o
   double worst = 0.0;
   for (const auto& [move, rows] : cuts)
     for (std::size_t i = 0; i < rows.size(); i += 7, ++checked)
-      worst = std::max(worst, meshDistance(triangles, rows[i].position));
+      worst = std::max(worst, meshDistance(triangles, rows[i].positionMm));
   EXPECT_GT(checked, 50u);
   EXPECT_LT(worst, 1e-6) << "contact farther from " << name << " than rounding";
 }

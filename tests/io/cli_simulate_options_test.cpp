@@ -121,15 +121,16 @@ TEST(CliSimulate, CorrectLiftsARollOutOfAConcaveTrough) {
             static_cast<float>(trough(part.surfacePoint(f, i, k).y()));
   writeDdf(part, dir / "part.ddf");
   // A roll (axis x, R 5 > bottom radius 1.25) fed across the trough along y.
-  ToolPathCsv table;
+  ClProgram table;
+  table.pointKind = ClPointKind::Contact;
   for (int p = 0; p <= 48; ++p) {
-    ToolPathCsvRow row;
+    ClPoint row;
     row.point = p;
     const double y = 4.0 + 0.25 * p;
-    row.position = {10.0, y, trough(y)};
-    row.toolAxis = {1, 0, 0};
+    row.positionMm = {10.0, y, trough(y)};
+    row.axis = ddf::Vec3(1, 0, 0);
     row.normal = ddf::Vec3(0, -troughSlope(y), 1).normalized();
-    table.rows.push_back(row);
+    table.points.push_back(row);
   }
   writeToolPathCsv(table, dir / "across.csv");
   const std::vector<std::string> roll = {"--radius", "5", "--width", "4", "--no-vconvexity-check"};

@@ -63,17 +63,18 @@ inline ddf::DisplacementField plate() {
 
 /// One cut pass along x at y = 10 from x = 2 to 18 every @p step mm: contacts on z = 0, roll
 /// axis along y, normal +z.
-inline io::ToolPathCsv straightPass(double step = 0.1) {
-  io::ToolPathCsv table;
+inline io::ClProgram straightPass(double step = 0.1) {
+  io::ClProgram table;
+  table.pointKind = io::ClPointKind::Contact;
   const int count = static_cast<int>(std::lround(16.0 / step));
   for (int p = 0; p <= count; ++p) {
-    io::ToolPathCsvRow row;
+    io::ClPoint row;
     row.point = p;
-    row.position = {2.0 + step * p, 10.0, 0.0};
-    row.toolAxis = {0, 1, 0};
-    row.normal = {0, 0, 1};
+    row.positionMm = {2.0 + step * p, 10.0, 0.0};
+    row.axis = ddf::Vec3(0, 1, 0);
+    row.normal = ddf::Vec3(0, 0, 1);
     row.feedMmPerMin = 1000;
-    table.rows.push_back(row);
+    table.points.push_back(row);
   }
   return table;
 }

@@ -91,7 +91,7 @@ TEST(CliSimulate, PlanThenSimulateOnTheDemoPart) {
            "transverse", "--spacing", "8", "--tool", "ball"});
   ASSERT_EQ(plan.exitCode, 0) << plan.err;
   std::size_t cutRows = 0;
-  for (const auto& row : readToolPathCsv(dir / "p.csv").rows)
+  for (const auto& row : readToolPathCsv(dir / "p.csv").points)
     cutRows += row.move == planning::MoveKind::Cut ? 1 : 0;
   const CliRun run = cli(dir, "simulate",
                          {"demo", "--paths", (dir / "p.csv").string(), "--tool", "ball",
@@ -167,8 +167,8 @@ TEST(CliSimulate, BadArgumentsGiveClearErrorsAndExitCodes) {
     EXPECT_THAT(run.err, HasSubstr(c.message)) << c.args.back();
   }
   EXPECT_FALSE(std::filesystem::exists(out));
-  ToolPathCsv links = straightPass();
-  for (auto& row : links.rows) row.move = planning::MoveKind::Link;
+  ClProgram links = straightPass();
+  for (auto& row : links.points) row.move = planning::MoveKind::Link;
   writeToolPathCsv(links, dir / "links.csv");
   const CliRun run =
       cli(dir, "simulate", {part, "--paths", (dir / "links.csv").string(), "-o", out});

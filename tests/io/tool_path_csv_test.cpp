@@ -1,18 +1,18 @@
 // SPDX-License-Identifier: MIT
-// Tests of the tool-path CSV writer and reader: documented layout, round trips, errors.
+// Tests of the tool-path CSV writer and reader: documented layout, units, round trips, the
+// common variants, the shared robot path file, errors with line numbers, garbage input.
 #include <ddfcam/error.h>
 #include <ddfcam/io/tool_path_csv.h>
-#include <ddfcam/planning/path_linking.h>
-#include <ddfcam/planning/tool_placement.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <Eigen/Geometry>
-
+#include <clocale>
 #include <cmath>
+#include <fstream>
 #include <locale>
 #include <random>
+#include <set>
 #include <string>
 
 #include "io_test_support.h"
@@ -20,28 +20,8 @@
 namespace ddfcam::io {
 namespace {
 
+using planning::MoveKind;
 using ::testing::HasSubstr;
-
-planning::PathPose poseAt(const ddf::Vec3& contact, const ddf::Vec3& normal, double liftMm,
-                          const Eigen::Matrix3d& rotation = Eigen::Matrix3d::Identity()) {
-  planning::PathPose pose;
-  pose.pose.linear() = rotation;
-  pose.pose.translation() = contact + liftMm * normal.normalized();
-  pose.contact = contact;
-  return pose;
-}
-
-/// Two passes (2 and 1 poses) over the plane z = 0.5, the tool 3 mm above its contact.
-planning::ToolPath twoPasses() {
-  planning::ToolPath path;
-  path.name = "two";
-  path.feedMmPerMin = 1500.0;
-  const Eigen::Matrix3d quarter = Eigen::AngleAxisd(M_PI / 2, ddf::Vec3::UnitZ()).matrix();
-  path.poses = {poseAt({1, 2, 0.5}, {0, 0, 1}, 3.0), poseAt({1.25, 2, 0.5}, {0, 0, 1}, 3.0),
-                poseAt({-1, 0.125, 0.5}, {0, 0, 1}, 3.0, quarter)};
-  path.passStarts = {0, 2};
-  return path;
-}
 
 std::vector<std::string> linesOf(const std::string& text) {
   std::vector<std::string> lines;
@@ -50,188 +30,327 @@ std::vector<std::string> linesOf(const std::string& text) {
   return lines;
 }
 
-TEST(ToolPathCsv, WritesTheDocumentedColumns) {
-  const ToolPathCsv table = toolPathCsvRows(twoPasses(), CsvPointKind::Contact);
-  const std::vector<std::string> lines = linesOf(encodeToolPathCsv(table, {.decimals = 3}));
-  ASSERT_EQ(lines.size(), 4u);
-  EXPECT_EQ(lines[0],
+/// Two hand-made points: a 5-axis cut and a rapid without axis and normal.
+ClProgram handMade(ClPointKind kind) {
+  ClProgram program;
+  program.pointKind = kind;
+  ClPoint a;
+  a.positionMm = {25.4, -2.0, 0.5};
+  a.axis = ddf::Vec3(0, 0.6, 0.8);
+  a.normal = ddf::Vec3(0, 0, 1);
+  a.feedMmPerMin = 254.0;
+  ClPoint b;
+  b.path = 1;
+  b.point = 3;
+  b.positionMm = {0.0, 50.8, -1.25};
+  b.move = MoveKind::Rapid;
+  program.points = {a, b};
+  return program;
+}
+
+TEST(ToolPathCsv, HeaderNamesThePointKindAndTheUnits) {
+  EXPECT_EQ(toolPathCsvHeader(ClPointKind::Contact),
             "path,point,contact_x_mm,contact_y_mm,contact_z_mm,axis_i,axis_j,axis_k,normal_x,"
             "normal_y,normal_z,feed_mm_per_min,move");
-  EXPECT_EQ(lines[1], "0,0,1.000,2.000,0.500,1.000,0.000,0.000,0.000,0.000,1.000,1500.000,cut");
-  EXPECT_EQ(lines[2], "0,1,1.250,2.000,0.500,1.000,0.000,0.000,0.000,0.000,1.000,1500.000,cut");
-  // The second pass restarts the point count; the rotated tool's +x is the part's +y.
-  EXPECT_EQ(lines[3], "1,0,-1.000,0.125,0.500,0.000,1.000,0.000,0.000,0.000,1.000,1500.000,cut");
-  const ToolPathCsv reference = toolPathCsvRows(twoPasses(), CsvPointKind::ToolReference);
-  const std::vector<std::string> refLines = linesOf(encodeToolPathCsv(reference, {.decimals = 1}));
-  EXPECT_THAT(refLines[0], HasSubstr("path,point,tool_x_mm,tool_y_mm,tool_z_mm,axis_i"));
-  EXPECT_EQ(refLines[1], "0,0,1.0,2.0,3.5,1.0,0.0,0.0,0.0,0.0,1.0,1500.0,cut");
-  EXPECT_EQ(linesOf(encodeToolPathCsv(table, {.decimals = 0}))[3],
-            "1,0,-1,0,0,0,1,0,0,0,1,1500,cut");
+  EXPECT_EQ(toolPathCsvHeader(ClPointKind::ToolReference, LengthUnit::Inch),
+            "path,point,tool_x_in,tool_y_in,tool_z_in,axis_i,axis_j,axis_k,normal_x,normal_y,"
+            "normal_z,feed_in_per_min,move");
+  EXPECT_THAT(toolPathCsvHeader(ClPointKind::Contact, LengthUnit::Metre),
+              HasSubstr("contact_z_m,axis_i"));
+}
+
+TEST(ToolPathCsv, WritesTheDocumentedColumns) {
+  const std::string mm = encodeToolPathCsv(handMade(ClPointKind::Contact), {.decimals = 3});
+  EXPECT_EQ(mm, toolPathCsvHeader(ClPointKind::Contact) +
+                    "\n"
+                    "0,0,25.400,-2.000,0.500,0.000,0.600,0.800,0.000,0.000,1.000,254.000,cut\n"
+                    "1,3,0.000,50.800,-1.250,,,,,,,0.000,rapid\n");
+  const std::string inch = encodeToolPathCsv(handMade(ClPointKind::ToolReference),
+                                             {.decimals = 2, .unit = LengthUnit::Inch});
+  EXPECT_EQ(linesOf(inch)[1], "0,0,1.00,-0.08,0.02,0.00,0.60,0.80,0.00,0.00,1.00,10.00,cut");
+  EXPECT_EQ(linesOf(inch)[2], "1,3,0.00,2.00,-0.05,,,,,,,0.00,rapid");
+  EXPECT_THROW(encodeToolPathCsv(handMade(ClPointKind::Contact), {.decimals = 18}), InvalidInput);
+  EXPECT_THROW(encodeToolPathCsv(handMade(ClPointKind::Contact), {.decimals = -1}), InvalidInput);
+  ClProgram bad = handMade(ClPointKind::Contact);
+  bad.points[1].positionMm.x() = NAN;
+  EXPECT_THROW(encodeToolPathCsv(bad), InvalidInput);
 }
 
 struct CommaDecimal : std::numpunct<char> {
   char do_decimal_point() const override { return ','; }
+  char do_thousands_sep() const override { return '.'; }
+  std::string do_grouping() const override { return "\3"; }
 };
 
 TEST(ToolPathCsv, DecimalPointIgnoresTheGlobalLocale) {
+  // A German-like global locale (comma decimal point, dot grouping); also the C locale of a
+  // German system if one is installed.
   const std::locale previous =
       std::locale::global(std::locale(std::locale::classic(), new CommaDecimal));
-  const std::string text = encodeToolPathCsv(toolPathCsvRows(twoPasses(), CsvPointKind::Contact));
+  const char* german = std::setlocale(LC_ALL, "de_DE.UTF-8");
+  const std::string text = encodeToolPathCsv(handMade(ClPointKind::Contact), {.decimals = 3});
+  const ClProgram back = decodeToolPathCsv(text, "de.csv");
+  std::setlocale(LC_ALL, "C");
   std::locale::global(previous);
-  EXPECT_THAT(linesOf(text)[1], HasSubstr("1.000000,2.000000,0.500000"));
+  EXPECT_THAT(linesOf(text)[1], HasSubstr("25.400,-2.000,0.500"));
+  for (const std::string& line : linesOf(text))
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), 12) << line;
+  EXPECT_EQ(back.points[1].positionMm, ddf::Vec3(0.0, 50.8, -1.25));
+  if (!german) GTEST_LOG_(INFO) << "de_DE.UTF-8 not installed; checked the C++ global locale";
 }
 
-TEST(ToolPathCsv, ExplicitNormalsAndErrors) {
-  const planning::ToolPath path = twoPasses();
-  const std::vector<ddf::Vec3> normals = {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
-  const ToolPathCsv table = toolPathCsvRows(path, CsvPointKind::Contact, normals);
-  EXPECT_EQ(table.rows[1].normal, ddf::Vec3(0, 1, 0));
-  EXPECT_THROW(toolPathCsvRows(path, CsvPointKind::Contact, {{1, 0, 0}}), InvalidInput);
-  planning::ToolPath flat = path;
-  flat.poses[2].contact = flat.poses[2].pose.translation();
-  EXPECT_THROW(toolPathCsvRows(flat, CsvPointKind::Contact), InvalidInput);
-  EXPECT_THROW(encodeToolPathCsv(table, {.decimals = 18}), InvalidInput);
-  EXPECT_THROW(encodeToolPathCsv(table, {.decimals = -1}), InvalidInput);
-}
-
-ToolPathCsv randomTable(std::mt19937& rng, CsvPointKind kind) {
-  std::uniform_real_distribution<double> coord(-500.0, 500.0), unit(-1.0, 1.0);
-  ToolPathCsv table{kind, {}};
-  for (int i = 0; i < 200; ++i) {
-    ToolPathCsvRow row;
-    row.path = i / 17;
-    row.point = i % 17;
-    row.position = {coord(rng), coord(rng), coord(rng)};
-    row.toolAxis = ddf::Vec3(unit(rng), unit(rng), unit(rng)).normalized();
-    row.normal = ddf::Vec3(unit(rng), unit(rng), unit(rng)).normalized();
-    row.feedMmPerMin = 100.0 * (i % 5);
-    row.move = static_cast<planning::MoveKind>(i % 3);
-    table.rows.push_back(row);
+/// A random program: 1-4 paths of 1-20 points, all columns exercised.
+ClProgram randomProgram(std::mt19937& rng, ClPointKind kind) {
+  std::uniform_real_distribution<double> coordinate(-500.0, 500.0), unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> count(1, 20), paths(1, 4), move(0, 2), coin(0, 3);
+  ClProgram program;
+  program.pointKind = kind;
+  const int pathCount = paths(rng);
+  for (int path = 0; path < pathCount; ++path) {
+    const int points = count(rng);
+    for (int point = 0; point < points; ++point) {
+      ClPoint p;
+      p.path = path;
+      p.point = point;
+      p.positionMm = {coordinate(rng), coordinate(rng), coordinate(rng)};
+      if (coin(rng) > 0) p.axis = ddf::Vec3(unit(rng), unit(rng), unit(rng) + 2.0).normalized();
+      if (coin(rng) > 0) p.normal = ddf::Vec3(unit(rng) + 2.0, unit(rng), unit(rng)).normalized();
+      p.move = static_cast<MoveKind>(move(rng));
+      p.feedMmPerMin = p.move == MoveKind::Rapid ? 0.0 : 10000.0 * (unit(rng) + 1.0);
+      program.points.push_back(p);
+    }
   }
-  return table;
+  return program;
+}
+
+void expectSameToPrecision(const ClProgram& a, const ClProgram& b, double unitMm, int decimals) {
+  ASSERT_EQ(a.points.size(), b.points.size());
+  EXPECT_EQ(a.pointKind, b.pointKind);
+  const double lengthTolerance = 0.51 * std::pow(10.0, -decimals) * unitMm + 1e-9;
+  const double vectorTolerance = 2.0 * std::pow(10.0, -decimals) + 1e-12;
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    const ClPoint& p = a.points[i];
+    const ClPoint& q = b.points[i];
+    EXPECT_EQ(p.path, q.path) << i;
+    EXPECT_EQ(p.point, q.point) << i;
+    EXPECT_EQ(p.move, q.move) << i;
+    EXPECT_EQ(q.sourceLine, static_cast<int>(i) + 2) << i;
+    EXPECT_LE((p.positionMm - q.positionMm).lpNorm<Eigen::Infinity>(), lengthTolerance) << i;
+    EXPECT_NEAR(p.feedMmPerMin, q.feedMmPerMin, lengthTolerance) << i;
+    ASSERT_EQ(p.axis.has_value(), q.axis.has_value()) << i;
+    ASSERT_EQ(p.normal.has_value(), q.normal.has_value()) << i;
+    if (p.axis) EXPECT_LE((*p.axis - *q.axis).norm(), vectorTolerance) << i;
+    if (p.normal) EXPECT_LE((*p.normal - *q.normal).norm(), vectorTolerance) << i;
+  }
 }
 
 TEST(ToolPathCsv, RoundTripKeepsTheWrittenPrecision) {
   std::mt19937 rng(7);
-  for (const CsvPointKind kind : {CsvPointKind::Contact, CsvPointKind::ToolReference})
-    for (const int decimals : {0, 3, 6, 12}) {
-      const ToolPathCsv table = randomTable(rng, kind);
-      const ToolPathCsv back =
-          decodeToolPathCsv(encodeToolPathCsv(table, {.decimals = decimals}), "t.csv");
-      ASSERT_EQ(back.pointKind, kind);
-      ASSERT_EQ(back.rows.size(), table.rows.size());
-      // Rounding to d decimals moves a value by at most half a unit in the last place (plus
-      // the double's own rounding of values up to 500).
-      const double tolerance = 0.5 * std::pow(10.0, -decimals) + 1e-12;
-      for (std::size_t r = 0; r < table.rows.size(); ++r) {
-        const ToolPathCsvRow& a = table.rows[r];
-        const ToolPathCsvRow& b = back.rows[r];
-        EXPECT_EQ(a.path, b.path);
-        EXPECT_EQ(a.point, b.point);
-        EXPECT_EQ(a.move, b.move);
-        EXPECT_LE((a.position - b.position).cwiseAbs().maxCoeff(), tolerance) << r;
-        EXPECT_LE((a.toolAxis - b.toolAxis).cwiseAbs().maxCoeff(), tolerance) << r;
-        EXPECT_LE((a.normal - b.normal).cwiseAbs().maxCoeff(), tolerance) << r;
-        EXPECT_NEAR(a.feedMmPerMin, b.feedMmPerMin, tolerance) << r;
+  for (const ClPointKind kind : {ClPointKind::Contact, ClPointKind::ToolReference})
+    for (const LengthUnit unit : {LengthUnit::Millimetre, LengthUnit::Inch, LengthUnit::Metre})
+      for (const int decimals : {4, 6, 9}) {
+        const ClProgram program = randomProgram(rng, kind);
+        // The reader must take the unit from the header, whatever it is told to assume.
+        const ClProgram back = decodeToolPathCsv(
+            encodeToolPathCsv(program, {.decimals = decimals, .unit = unit}), "t.csv",
+            {.unitIfUnstated = LengthUnit::Inch, .kindIfUnstated = ClPointKind::Contact});
+        expectSameToPrecision(program, back, millimetresPer(unit), decimals);
+        EXPECT_EQ(back.sourceUnit, unit);
+        EXPECT_EQ(back.partName, "t");
       }
-    }
 }
 
-TEST(ToolPathCsv, FileRoundTripAndWindowsLineEnds) {
+TEST(ToolPathCsv, FileRoundTripAndOneFilePerProgram) {
   test::ScratchDir dir;
-  std::mt19937 rng(11);
-  const ToolPathCsv table = randomTable(rng, CsvPointKind::Contact);
-  writeToolPathCsv(table, dir / "p.csv", {.decimals = 17});
-  const ToolPathCsv back = readToolPathCsv(dir / "p.csv");
-  ASSERT_EQ(back.rows.size(), table.rows.size());
-  // 17 decimals of values below 500 keep every bit a double has there.
-  EXPECT_EQ(back.rows[5].position, table.rows[5].position);
-  std::string crlf;
-  for (const std::string& line : linesOf(encodeToolPathCsv(table))) crlf += line + "\r\n";
-  EXPECT_EQ(decodeToolPathCsv(crlf, "w.csv").rows.size(), table.rows.size());
+  std::mt19937 rng(3);
+  const ClProgram program = randomProgram(rng, ClPointKind::Contact);
+  writeToolPathCsv(program, dir / "p.csv", {.decimals = 12});
+  expectSameToPrecision(program, readToolPathCsv(dir / "p.csv"), 1.0, 12);
+  EXPECT_THROW(readToolPathCsv(dir / "missing.csv"), IoError);
+
+  const std::vector<NamedProgram> programs = {
+      {"left wing", randomProgram(rng, ClPointKind::Contact)},
+      {"left-wing", randomProgram(rng, ClPointKind::Contact)},
+      {"left/wing", randomProgram(rng, ClPointKind::Contact)},
+      {"", randomProgram(rng, ClPointKind::Contact)}};
+  const std::vector<std::filesystem::path> files =
+      writeToolPathCsvFiles(programs, dir / "job.csv", {.decimals = 9});
+  const std::vector<std::filesystem::path> expected = {
+      dir / "job_left_wing.csv", dir / "job_left-wing.csv", dir / "job_left_wing_2.csv",
+      dir / "job_program.csv"};
+  EXPECT_EQ(files, expected);
+  for (std::size_t i = 0; i < files.size(); ++i)
+    expectSameToPrecision(programs[i].program, readToolPathCsv(files[i]), 1.0, 9);
+  EXPECT_EQ(writeToolPathCsvFiles({programs[0]}, dir / "one.csv"),
+            std::vector<std::filesystem::path>{dir / "one.csv"});
+  EXPECT_TRUE(std::filesystem::exists(dir / "one.csv"));
+  EXPECT_THROW(writeToolPathCsvFiles({}, dir / "none.csv"), InvalidInput);
 }
 
-std::string readError(const std::string& text) {
+TEST(ToolPathCsv, ReadsThreeAndSixColumnVariantsWithAnyDelimiter) {
+  const ClProgram blanks = decodeToolPathCsv("1 2 3\n  4\t5   6.5e1\n", "b.xyz");
+  ASSERT_EQ(blanks.points.size(), 2u);
+  EXPECT_EQ(blanks.points[1].positionMm, ddf::Vec3(4, 5, 65));
+  EXPECT_EQ(blanks.points[1].point, 1);
+  EXPECT_EQ(blanks.points[1].sourceLine, 2);
+  EXPECT_FALSE(blanks.points[0].axis.has_value());
+  EXPECT_EQ(blanks.pointKind, ClPointKind::ToolReference);
+  EXPECT_EQ(blanks.partName, "b");
+
+  const ClProgram semicolons =
+      decodeToolPathCsv("X;Y;Z;I;J;K\r\n1;2;3;0;0;2\r\n\r\n+1.5;-2;3e-1;3;4;0\r\n", "s.csv");
+  ASSERT_EQ(semicolons.points.size(), 2u);
+  EXPECT_EQ(*semicolons.points[0].axis, ddf::Vec3(0, 0, 1));  // normalised
+  EXPECT_LT((*semicolons.points[1].axis - ddf::Vec3(0.6, 0.8, 0)).norm(), 1e-15);
+  EXPECT_EQ(semicolons.points[1].positionMm, ddf::Vec3(1.5, -2, 0.3));
+  EXPECT_EQ(semicolons.points[1].sourceLine, 4);
+
+  const ClProgram tabs =
+      decodeToolPathCsv("x\ty\tz\n1\t2\t3\n", "t.tsv", {.unitIfUnstated = LengthUnit::Inch});
+  EXPECT_LT((tabs.points[0].positionMm - ddf::Vec3(25.4, 50.8, 76.2)).norm(), 1e-12);
+  EXPECT_EQ(tabs.sourceUnit, LengthUnit::Inch);
+
+  const ClProgram headerless = decodeToolPathCsv("1,2,3,0,1,0\n", "h.csv");
+  EXPECT_EQ(*headerless.points[0].axis, ddf::Vec3(0, 1, 0));
+}
+
+TEST(ToolPathCsv, ReadsPathColumnsCommentsAndUnitsFromTheHeader) {
+  const std::string text =
+      "\xEF\xBB\xBF# exported by a robot cell\n"
+      "\n"
+      "path_index, x [m], y [m], z [m], quality\n"
+      "7, 0.001, 0.002, 0.003, good   # inline remark\n"
+      "7, 0.004, 0.005, 0.006, good\n"
+      "  # between paths\n"
+      "3, 0.007, 0.008, 0.009, bad\n"
+      "7, 0.010, 0.011, 0.012, good\n";
+  const ClProgram program = decodeToolPathCsv(text, "robot.csv");
+  ASSERT_EQ(program.points.size(), 4u);
+  EXPECT_EQ(program.sourceUnit, LengthUnit::Metre);
+  EXPECT_LT((program.points[0].positionMm - ddf::Vec3(1, 2, 3)).norm(), 1e-12);
+  EXPECT_EQ(program.points[2].path, 1);  // 7 -> 0, 3 -> 1, in order of appearance
+  EXPECT_EQ(program.points[3].path, 0);
+  EXPECT_EQ(program.points[3].point, 2);
+  EXPECT_EQ(program.points[2].point, 0);
+  EXPECT_EQ(program.points[2].sourceLine, 7);
+  EXPECT_EQ(program.comments,
+            (std::vector<std::string>{"exported by a robot cell", "between paths"}));
+  ASSERT_EQ(program.warnings.size(), 1u);
+  EXPECT_EQ(program.warnings[0].line, 3);
+  EXPECT_THAT(program.warnings[0].text, HasSubstr("'quality'"));
+
+  const ClProgram four = decodeToolPathCsv("2 1 1 1\n2 2 2 2\n5 3 3 3\n", "four.txt");
+  EXPECT_EQ(four.pathCount(), 2);
+  EXPECT_EQ(four.points[2].positionMm, ddf::Vec3(3, 3, 3));
+
+  const ClProgram own = decodeToolPathCsv(
+      "path,point,contact_x_in,contact_y_in,contact_z_in,normal_x,normal_y,normal_z,"
+      "feed_in_per_min,move\n0,0,1,2,3,0,0,5,10,LINK\n",
+      "own.csv", {.unitIfUnstated = LengthUnit::Metre});
+  EXPECT_EQ(own.pointKind, ClPointKind::Contact);
+  EXPECT_EQ(own.sourceUnit, LengthUnit::Inch);
+  EXPECT_LT((own.points[0].positionMm - ddf::Vec3(25.4, 50.8, 76.2)).norm(), 1e-12);
+  EXPECT_EQ(*own.points[0].normal, ddf::Vec3(0, 0, 1));
+  EXPECT_DOUBLE_EQ(own.points[0].feedMmPerMin, 254.0);
+  EXPECT_EQ(own.points[0].move, MoveKind::Link);
+  EXPECT_FALSE(own.points[0].axis.has_value());
+}
+
+TEST(ToolPathCsv, ReadsTheSharedRoboticSandingPath) {
+  const std::filesystem::path file = std::filesystem::path(DDFCAM_SHARED_DATA_DIR) / "paths" /
+                                     "crs-robotic-sanding" / "part_2_job_0_degrees.xyzijk.csv";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " is absent (shared data)";
+  const ClProgram program = readToolPathCsv(file, {.unitIfUnstated = LengthUnit::Metre});
+  ASSERT_EQ(program.points.size(), 98u);
+  EXPECT_EQ(program.pathCount(), 7);
+  EXPECT_EQ(program.sourceUnit, LengthUnit::Metre);
+  EXPECT_EQ(program.comments.size(), 1u);
+  std::set<int> paths;
+  for (const ClPoint& p : program.points) {
+    ASSERT_TRUE(p.axis.has_value());
+    EXPECT_NEAR(p.axis->norm(), 1.0, 1e-12);
+    EXPECT_LT(p.positionMm.norm(), 2000.0);  // metres read as millimetres
+    paths.insert(p.path);
+  }
+  EXPECT_EQ(paths, (std::set<int>{0, 1, 2, 3, 4, 5, 6}));
+  // First row of the file (line 2): 0,0.605343,-0.122467,-0.052194,0.096173,-0.164257,0.981718
+  const ClPoint& first = program.points.front();
+  EXPECT_EQ(first.sourceLine, 2);
+  EXPECT_LT((first.positionMm - ddf::Vec3(605.343, -122.467, -52.194)).norm(), 1e-9);
+  EXPECT_LT((*first.axis - ddf::Vec3(0.096173, -0.164257, 0.981718).normalized()).norm(), 1e-12);
+  EXPECT_EQ(program.points.back().sourceLine, 99);
+}
+
+/// The message of the IoError @p text raises (empty if none).
+std::string errorOf(const std::string& text, const CsvReadParams& params = {}) {
   try {
-    decodeToolPathCsv(text, "bad.csv");
+    decodeToolPathCsv(text, "bad.csv", params);
   } catch (const IoError& e) {
     return e.what();
   }
-  ADD_FAILURE() << "no IoError for:\n" << text;
   return {};
 }
 
 TEST(ToolPathCsv, BadInputNamesTheLine) {
-  const std::string header = toolPathCsvHeader(CsvPointKind::Contact) + "\n";
-  const std::string good = "0,0,1,2,3,1,0,0,0,0,1,1000,cut\n";
-  EXPECT_THAT(readError(""), HasSubstr("bad.csv: empty file"));
-  EXPECT_THAT(readError("x,y,z\n" + good), HasSubstr("bad.csv: line 1: not a ddfcam tool-path"));
-  EXPECT_THAT(readError(header + good + "0,1,1,2,3\n"),
-              HasSubstr("bad.csv: line 3: 5 fields, expected 13"));
-  EXPECT_THAT(readError(header + "0,0,1,2,abc,1,0,0,0,0,1,1000,cut\n"),
-              HasSubstr("line 2: column 5 (x y z): 'abc' is not a number"));
-  EXPECT_THAT(readError(header + "0,0,1,2,3,1,0,0,0,0,1,1.5.1,cut\n"),
-              HasSubstr("line 2: column 12 (feed): '1.5.1' is not a number"));
-  EXPECT_THAT(readError(header + "-1,0,1,2,3,1,0,0,0,0,1,1000,cut\n"),
-              HasSubstr("line 2: column 1 (path): '-1' is not a non-negative integer"));
-  EXPECT_THAT(readError(header + good + good + "0,2,1,2,3,1,0,0,0,0,1,1000,plunge\n"),
-              HasSubstr("line 4: column 13 (move): 'plunge' is not cut, link or rapid"));
-  EXPECT_THAT(readError(header + good + "\n" + good), HasSubstr("line 3: 1 fields"));
-  EXPECT_THAT(readError(header + "0,0,1,2,,1,0,0,0,0,1,1000,cut\n"), HasSubstr("column 5"));
-  test::ScratchDir dir;
-  EXPECT_THROW(readToolPathCsv(dir / "missing.csv"), IoError);
-  EXPECT_TRUE(decodeToolPathCsv(header, "h.csv").rows.empty());
+  const std::string own = toolPathCsvHeader(ClPointKind::Contact) + "\n";
+  const std::string row = "0,0,1,2,3,0,0,1,0,0,1,100,cut\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"x,y,z\n1,2,3\n1,2\n", "bad.csv: line 3: 2 fields, expected 3"},
+      {"x,y,z\n1,2,3\n1,zwei,3\n", "line 3: field 2 ('zwei') is not a number"},
+      {"1;2,5;3\n", "line 1: field 2 ('2,5') is not a number (decimal comma"},
+      {"x y z i j k\n\n1 2 3 0 0 0\n", "line 3: the axis vector is zero"},
+      {"x,y,z,i,j,k\n1,2,3,nan,0,1\n", "line 2: field 4 ('nan') is not finite"},
+      {"x,y,z,i,j,k\n1,2,3,inf,0,1\n", "line 2: field 4 ('inf') is not finite"},
+      {"x,y,z,i,j,k\n1,2,3,,0,1\n", "line 2: the axis has 2 of 3 values"},
+      {own + row + "0,1,1,2,3,0,0,1,0,0,1,100,plunge\n", "line 3: field 13 ('plunge') is not a"},
+      {own + row + "-1,1,1,2,3,0,0,1,0,0,1,100,cut\n", "line 3: field 1 ('-1') is not a non-neg"},
+      {own + row + "0,0,1,2,3,0,0,1,0,0,0,100,cut\n", "line 3: the normal vector is zero"},
+      {"x,y,i,j,k\n", "line 1: header: the header has 2 of the 3 x y z columns"},
+      {"x,y,z,x\n", "line 1: header: column 'x' names a quantity"},
+      {"x [ft],y,z\n", "line 1: header: column 'x [ft]': unknown unit 'ft'"},
+      {"# only\n\n", "bad.csv: no header and no data row"},
+      {"", "bad.csv: no header and no data row"},
+      {"1,2,3,4,5\n", "line 1: 5 fields and no header; expected 3 (x,y,z)"},
+      {std::string("x,y,z\n1,2,3\n4,5\0,6\n", 19), "line 3: control character 0x00"},
+      {std::string("x,y,z\n1,2,3\n\x01\x02\x03\n"), "line 3: control character 0x01"},
+      {"x,y,z\n1,2,3\n4,5,6\n7,8,9\n", "line 4: more than 2 rows"},
+  };
+  for (const auto& [text, expected] : cases)
+    EXPECT_THAT(errorOf(text, {.maxRows = 2}), HasSubstr(expected)) << "input: " << text;
+  // A header alone is an empty program, not an error.
+  EXPECT_TRUE(decodeToolPathCsv(own, "h.csv").points.empty());
 }
 
-TEST(ToolPathCsv, LinkedMovesCarryTypesFeedsAndTheLastCutsOrientation) {
-  // Three parallel lines along x on the plane z = 0, 2 mm apart; every link lifts.
-  std::vector<std::vector<ddf::Vec3>> lines;
-  planning::ToolPath path;
-  path.feedMmPerMin = 800.0;
-  for (int l = 0; l < 3; ++l) {
-    lines.emplace_back();
-    path.passStarts.push_back(static_cast<int>(path.poses.size()));
-    for (int i = 0; i <= 4; ++i) {
-      const ddf::Vec3 contact(2.5 * i, 2.0 * l, 0.0);
-      lines.back().push_back(contact);
-      planning::PathPose pose;
-      pose.pose =
-          planning::rollPoseAtContact(contact, ddf::Vec3::UnitZ(), ddf::Vec3::UnitX(), 5.0, 0.0);
-      pose.contact = contact;
-      path.poses.push_back(pose);
+TEST(ToolPathCsv, GarbageNeverCrashesTheReader) {
+  // Random bytes, and valid files with bytes flipped, cut or duplicated: only IoError.
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> byte(0, 255), length(0, 200);
+  const std::string valid = encodeToolPathCsv(randomProgram(rng, ClPointKind::Contact)) +
+                            "x,y,z\n1 2 3\n# c\n;;;\n,,,,,,\n";
+  const std::string alphabet = "0123456789.,;-+eE \t\n\r#xyzijkpathcutlinkrapidnanINF\"";
+  std::uniform_int_distribution<std::size_t> pick(0, alphabet.size() - 1);
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::string text;
+    if (trial % 3 == 0) {
+      for (int i = length(rng); i > 0; --i) text += static_cast<char>(byte(rng));
+    } else if (trial % 3 == 1) {
+      for (int i = length(rng); i > 0; --i) text += alphabet[pick(rng)];
+    } else {
+      text = valid;
+      std::uniform_int_distribution<std::size_t> at(0, text.size() - 1);
+      for (int i = 0; i < 4; ++i) text[at(rng)] = alphabet[pick(rng)];
+      text.resize(at(rng));
     }
-  }
-  const planning::LinkedPaths linked =
-      planning::linkPaths(lines, planning::LinkingParams{.clearanceMm = 2.0});
-  for (const CsvPointKind kind : {CsvPointKind::Contact, CsvPointKind::ToolReference}) {
-    const ToolPathCsv table = linkedToolPathCsvRows(linked, path, kind);
-    std::size_t row = 0;
-    for (std::size_t m = 0; m < linked.moves.size(); ++m) {
-      const planning::PathMove& move = linked.moves[m];
-      for (std::size_t i = 0; i < move.points.size(); ++i, ++row) {
-        ASSERT_LT(row, table.rows.size());
-        const ToolPathCsvRow& r = table.rows[row];
-        EXPECT_EQ(r.path, static_cast<int>(m));
-        EXPECT_EQ(r.point, static_cast<int>(i));
-        EXPECT_EQ(r.move, move.kind);
-        EXPECT_EQ(r.feedMmPerMin, move.kind == planning::MoveKind::Rapid ? 0.0 : 800.0);
-        // A roll touching z = 0 from above: centre 5 mm up, axis across the feed (along y).
-        const ddf::Vec3 expected =
-            move.points[i] + ddf::Vec3(0, 0, kind == CsvPointKind::Contact ? 0 : 5);
-        EXPECT_LT((r.position - expected).norm(), 1e-9) << "move " << m << " point " << i;
-        EXPECT_LT((r.normal - ddf::Vec3::UnitZ()).norm(), 1e-9);
-        EXPECT_NEAR(std::abs(r.toolAxis.y()), 1.0, 1e-9);
+    try {
+      const ClProgram program = decodeToolPathCsv(text, "garbage.csv");
+      for (const ClPoint& p : program.points) {
+        EXPECT_TRUE(p.positionMm.allFinite());
+        EXPECT_GE(p.path, 0);
+        if (p.axis) EXPECT_NEAR(p.axis->norm(), 1.0, 1e-9);
       }
+    } catch (const IoError&) {
     }
-    EXPECT_EQ(row, table.rows.size());
   }
-  EXPECT_GT(linked.liftedLinkCount, 0);
-  planning::LinkedPaths broken = linked;
-  broken.moves[0].points[1].x() += 0.1;
-  EXPECT_THROW(linkedToolPathCsvRows(broken, path, CsvPointKind::Contact), InvalidInput);
-  broken = linked;
-  broken.moves[0].path = 3;
-  EXPECT_THROW(linkedToolPathCsvRows(broken, path, CsvPointKind::Contact), InvalidInput);
 }
 
 }  // namespace

@@ -61,6 +61,12 @@ class MainWindow : public QMainWindow {
   /// @brief Opens @p path (project, .ddf or mesh) as File > Open does after its dialog.
   /// @return true if the load job started (it reports its own errors).
   bool openPath(const QString& path);
+  /// @brief Imports the tool-path file @p path onto the open part as File > Import tool path
+  /// does after its file dialog (import dialog, one undoable path). @return true if added.
+  bool importPathFile(const QString& path);
+  /// @brief File > Export tool paths: the export dialog, then the files. @return true if
+  /// written.
+  bool exportToolPaths();
   /// @brief Starts loading the demo part (File > Open demo part).
   bool openDemo();
   /// @brief Writes the 3D view to @p path at @p size (device pixels; invalid: view size).

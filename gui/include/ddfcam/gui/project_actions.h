@@ -13,12 +13,19 @@
 #include <functional>
 #include <optional>
 
+namespace ddfcam::planning {
+struct Project;
+}
+
 namespace ddfcam::gui {
 
 class Document;
 class JobRunner;
 class RecentFiles;
 class RecoveryManager;
+struct PathExportOptions;  // path_export_dialog.h
+struct PathImportOptions;  // path_import.h
+struct PathImportRequest;  // path_import.h
 
 /// @brief Answer to "the project has unsaved changes".
 enum class UnsavedChoice { Save, Discard, Cancel };
@@ -45,6 +52,18 @@ struct WorkbenchDialogs {
   std::function<int(const QStringList& entries)> offerRecovery;
   /// Shows an error of a user action.
   ErrorReporter error;
+  /// Asks for a tool-path file to import (File > Import tool path); empty means cancelled.
+  std::function<QString()> importPathFile;
+  /// Asks for the export options of @p project's paths, starting from @p initial (the last
+  /// choices); nullopt means cancelled.
+  std::function<std::optional<PathExportOptions>(const planning::Project& project,
+                                                 const PathExportOptions& initial)>
+      exportPaths;
+  /// Asks how to place a program read from a file, starting from @p initial; nullopt means
+  /// cancelled.
+  std::function<std::optional<PathImportOptions>(const PathImportRequest& request,
+                                                 const PathImportOptions& initial)>
+      importPath;
 };
 
 /// @brief File operations on a Document. Loading runs as a job (a big mesh converts for a

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
-// ddfcam: tool paths as CSV tables (one row per point) for post-processors and spreadsheets.
+// ddfcam: cutter-location programs as CSV tables (one row per point) for robots, posts and
+// spreadsheets; reads the common x,y,z[,i,j,k] variants too. Format: docs/tool_path_csv.md.
 #pragma once
 
-#include <ddfcam/ddf/support_mesh.h>
-#include <ddfcam/planning/path_linking.h>
-#include <ddfcam/planning/tool_path.h>
+#include <ddfcam/io/cl_program.h>
+#include <ddfcam/io/cl_program_builder.h>
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -13,86 +14,84 @@
 
 namespace ddfcam::io {
 
-/// @brief Which point of the tool the x y z columns give.
-enum class CsvPointKind {
-  Contact,       ///< PathPose::contact, the point meant to touch the design surface
-  ToolReference  ///< origin of the tool frame (PathPose::pose translation): roll or ball centre
-};
-
-/// @brief One row of a tool-path CSV: one point of the program. Part frame, mm.
-struct ToolPathCsvRow {
-  int path = 0;                             ///< pass (ToolPath) or move (LinkedPaths), 0-based
-  int point = 0;                            ///< point within the pass or move, 0-based
-  ddf::Vec3 position = ddf::Vec3::Zero();   ///< contact or tool reference point, mm
-  ddf::Vec3 toolAxis = ddf::Vec3::UnitX();  ///< tool frame +x in the part frame (roll axis), unit
-  ddf::Vec3 normal = ddf::Vec3::UnitZ();    ///< surface normal at the contact, tool side, unit
-  double feedMmPerMin = 0.0;                ///< feed, mm/min; 0 on Rapid rows (machine rapid)
-  planning::MoveKind move = planning::MoveKind::Cut;  ///< cut, link or rapid
-};
-
-/// @brief A whole table: its rows and which point they give.
-struct ToolPathCsv {
-  CsvPointKind pointKind = CsvPointKind::Contact;  ///< meaning of the x y z columns
-  std::vector<ToolPathCsvRow> rows;                ///< rows in machining order
-};
-
 /// @brief Options of the CSV writer.
-struct ToolPathCsvParams {
+struct CsvWriteParams {
   /// Digits after the decimal point of every real column, 0..17 (default 6: 1 nm in mm).
   int decimals = 6;
+  /// Unit of the position and feed columns, named in the header (default mm).
+  LengthUnit unit = LengthUnit::Millimetre;
 };
 
-/// @brief Rows of @p path: one per pose, pass by pass (ToolPath::passStarts; a path without
-/// passStarts is one pass), all Cut at the path's feed. The tool axis is pose.linear() * +x.
-/// @param normals #poses unit normals (tool side) or empty: then each normal is the direction
-/// from the contact to the tool reference point, which is the normal for poses made by
-/// rollPoseAtContact or toolPathFromStreamlines (the tool sits R - depth > 0 above the contact).
-/// @param kind contact or tool reference point in the x y z columns.
-/// @throws InvalidInput if @p normals has another size, or a derived normal is undefined
-/// (reference point on the contact).
-ToolPathCsv toolPathCsvRows(const planning::ToolPath& path, CsvPointKind kind,
-                            const std::vector<ddf::Vec3>& normals = {});
+/// @brief Largest number of data rows the reader accepts by default (50 million).
+inline constexpr std::size_t kMaxCsvRows = 50'000'000;
 
-/// @brief Rows of a linked program: one block per move of @p linked, in order (path column =
-/// move index). A Cut move takes the poses of pass move.path of @p path (in reverse order if
-/// move.reversed); its points must be that pass's contacts. Link and Rapid rows use the move's
-/// points as contact-level points and carry the tool axis, normal and reference-point offset of
-/// the last pose of the preceding Cut (the tool keeps that orientation while it travels); their
-/// feed is the path's feed for Link and 0 for Rapid.
-/// @param path poses, one pass per input path of linkPaths (same indices).
-/// @param normals #poses unit normals (tool side) of @p path, or empty: then derived as in
-/// toolPathCsvRows() (needed for cutters, whose tip may be the contact).
-/// @throws InvalidInput if a Cut refers to a missing pass, its points do not match the pass's
-/// contacts (count or value), the first move is not a Cut, or @p normals has another size.
-ToolPathCsv linkedToolPathCsvRows(const planning::LinkedPaths& linked,
-                                  const planning::ToolPath& path, CsvPointKind kind,
-                                  const std::vector<ddf::Vec3>& normals = {});
+/// @brief Options of the CSV reader.
+struct CsvReadParams {
+  /// Unit of the positions and feeds when the file does not name one (no ddfcam header), e.g.
+  /// Metre for robot paths (default mm).
+  LengthUnit unitIfUnstated = LengthUnit::Millimetre;
+  /// Meaning of the positions when the file does not say (default tool reference point).
+  ClPointKind kindIfUnstated = ClPointKind::ToolReference;
+  /// More data rows than this are refused with an IoError (default kMaxCsvRows, 50 million).
+  std::size_t maxRows = kMaxCsvRows;
+};
 
-/// @brief The header line (without line end) for @p kind:
-/// "path,point,P_x_mm,P_y_mm,P_z_mm,axis_i,axis_j,axis_k,normal_x,normal_y,normal_z,
-/// feed_mm_per_min,move" with P = "contact" or "tool".
-std::string toolPathCsvHeader(CsvPointKind kind);
+/// @brief The header line (without line end): "path,point,P_x_U,P_y_U,P_z_U,axis_i,axis_j,
+/// axis_k,normal_x,normal_y,normal_z,feed_U_per_min,move" with P = "contact" or "tool" and
+/// U = lengthUnitName(@p unit) ("mm", "in", "m").
+std::string toolPathCsvHeader(ClPointKind kind, LengthUnit unit = LengthUnit::Millimetre);
 
-/// @brief The CSV text: the header, then one line per row, each ending in "\n". Integers in
-/// decimal, reals in fixed notation with params.decimals digits and a '.' whatever the locale
-/// (std::to_chars), "nan"/"inf" for non-finite values, move as "cut", "link" or "rapid".
-/// @throws InvalidInput if params.decimals is outside 0..17.
-std::string encodeToolPathCsv(const ToolPathCsv& table, const ToolPathCsvParams& params = {});
-
-/// @brief Parses text written by encodeToolPathCsv (either header; "\r\n" line ends accepted;
-/// blank last line allowed). Values are read back to the written precision.
-/// @param sourceName file name used in messages.
-/// @throws IoError "<sourceName>: line N: ..." naming the line and the column that does not
-/// parse (unknown header, wrong field count, bad number, unknown move type).
-ToolPathCsv decodeToolPathCsv(std::string_view text, const std::string& sourceName);
+/// @brief The CSV text of @p program: the header, then one line per point, each ending in
+/// "\n". Integers in decimal, reals in fixed notation with params.decimals digits and a '.'
+/// whatever the locale (std::to_chars), positions and feeds converted to params.unit, move as
+/// "cut", "link" or "rapid". A point without axis (or normal) has the three axis (normal)
+/// fields empty. Header data other than the point kind (part and tool names, cutter, spindle,
+/// comments, warnings) is not written.
+/// @throws InvalidInput if params.decimals is outside 0..17 or a value is not finite (naming
+/// the point).
+std::string encodeToolPathCsv(const ClProgram& program, const CsvWriteParams& params = {});
 
 /// @brief Writes encodeToolPathCsv() to @p file atomically (temporary file + rename).
-/// @throws InvalidInput as encodeToolPathCsv. @throws IoError if the file cannot be written.
-void writeToolPathCsv(const ToolPathCsv& table, const std::filesystem::path& file,
-                      const ToolPathCsvParams& params = {});
+/// @throws InvalidInput as encodeToolPathCsv(). @throws IoError if the file cannot be written.
+void writeToolPathCsv(const ClProgram& program, const std::filesystem::path& file,
+                      const CsvWriteParams& params = {});
 
-/// @brief Reads a CSV written by writeToolPathCsv.
-/// @throws IoError if the file is missing or unreadable, or as decodeToolPathCsv.
-ToolPathCsv readToolPathCsv(const std::filesystem::path& file);
+/// @brief File name @p base would get for a program named @p name in writeToolPathCsvFiles():
+/// "<stem>_<sanitised name><extension>" next to @p base (extension ".csv" if @p base has none);
+/// sanitised: every character other than ASCII letters, digits, '-' and '_' becomes '_', runs
+/// of '_' are merged, leading and trailing '_' dropped; an empty result is "program".
+std::filesystem::path toolPathCsvFileFor(const std::filesystem::path& base,
+                                         const std::string& name);
+
+/// @brief Writes each of @p programs to its own file (toolPathCsvFileFor(base, name); names
+/// that sanitise alike get "_2", "_3", ... appended), or to @p base itself when there is
+/// exactly one program.
+/// @return the written files, in the order of @p programs.
+/// @throws InvalidInput if @p programs is empty, as encodeToolPathCsv(); IoError as
+/// writeToolPathCsv().
+std::vector<std::filesystem::path> writeToolPathCsvFiles(const std::vector<NamedProgram>& programs,
+                                                         const std::filesystem::path& base,
+                                                         const CsvWriteParams& params = {});
+
+/// @brief Parses a ddfcam tool-path CSV (units and point kind from its header) or a common
+/// variant: columns x,y,z / x,y,z,i,j,k / path,x,y,z[,i,j,k] with or without a header line
+/// (names such as x y z i j k nx ny nz path path_index point feed move, any case), fields
+/// separated by commas, semicolons, tabs or blanks (detected from the first data line), '#'
+/// lines kept as comments, blank lines and "\r\n" line ends accepted. A path column gives
+/// ClPoint::path (renumbered to 0-based consecutive indices in order of first appearance),
+/// otherwise all points are path 0; point indices count within each path. Axes are normalised
+/// to unit length. Every ClPoint::sourceLine is set; sourceUnit is the unit of the file.
+/// @param sourceName file name used in messages and as the program's partName (its stem).
+/// @throws IoError "<sourceName>: line N: <what>" for a wrong field count, a field that is not a
+/// number, a zero, partial or non-finite axis or normal, an unknown move word, a negative path
+/// index; or "<sourceName>: ..." for text with no data row recognised as such, binary content,
+/// or more than params.maxRows rows.
+ClProgram decodeToolPathCsv(std::string_view text, const std::string& sourceName,
+                            const CsvReadParams& params = {});
+
+/// @brief Reads @p file as decodeToolPathCsv().
+/// @throws IoError if the file is missing, unreadable or larger than 1 GiB, or as
+/// decodeToolPathCsv().
+ClProgram readToolPathCsv(const std::filesystem::path& file, const CsvReadParams& params = {});
 
 }  // namespace ddfcam::io

@@ -1,0 +1,446 @@
+// SPDX-License-Identifier: MIT
+// ddfcam: placing a cutter-location program read from a file on a part as a planning::ToolPath.
+#include <ddfcam/ddf/raster_mesh.h>
+#include <ddfcam/ddf/surface_sampling.h>
+#include <ddfcam/error.h>
+#include <ddfcam/io/imported_path.h>
+#include <ddfcam/planning/mesh_distance.h>
+#include <ddfcam/planning/path_sampling.h>
+#include <ddfcam/planning/tool_orientation.h>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <tuple>
+
+namespace ddfcam::io {
+namespace {
+
+using ddf::Vec3;
+using planning::ToolKind;
+
+constexpr int kRimSamples = 16;
+
+bool isWheel(ToolKind kind) {
+  return kind == ToolKind::CylinderRoll || kind == ToolKind::BeltContactWheel;
+}
+
+bool isCutter(ToolKind kind) {
+  return kind == ToolKind::BallEnd || kind == ToolKind::FlatEnd || kind == ToolKind::TorusCutter;
+}
+
+Vec3 spindleInToolFrame(ToolKind kind) {
+  return isCutter(kind) ? Vec3::UnitZ() : Vec3::UnitX();
+}
+
+std::string where(const ClProgram& program, int i) {
+  const int line = program.points[static_cast<std::size_t>(i)].sourceLine;
+  std::string s = "point " + std::to_string(i);
+  if (line > 0) s += " (line " + std::to_string(line) + ")";
+  return s;
+}
+
+std::string number(double v) {
+  std::ostringstream out;
+  out << v;  // 6 significant digits, "2" rather than "2.000000"
+  return out.str();
+}
+
+Vec3 unitOrThrow(const Vec3& v, const std::string& what) {
+  const double n = v.norm();
+  if (!v.allFinite() || !(n > 1e-12)) throw InvalidInput("placing a program: " + what);
+  return v / n;
+}
+
+/// The world axis least aligned with @p a made perpendicular to it (ties prefer z, then x).
+Vec3 perpendicularTo(const Vec3& a) {
+  Vec3 best = Vec3::UnitZ();
+  for (const Vec3& e : {Vec3(Vec3::UnitX()), Vec3(Vec3::UnitY())})
+    if (std::abs(e.dot(a)) < std::abs(best.dot(a)) - 1e-12) best = e;
+  return (best - best.dot(a) * a).normalized();
+}
+
+void validate(const ClProgram& program, const planning::Tool& tool,
+              const PlaceProgramParams& params) {
+  planning::validateTool(tool);
+  if (program.points.empty()) throw InvalidInput("placing a program: the program has no points");
+  const Eigen::Matrix3d r = params.transform.linear();
+  if (!params.transform.matrix().allFinite())
+    throw InvalidInput("placing a program: the transform is not finite");
+  if (!(r.transpose() * r).isApprox(Eigen::Matrix3d::Identity(), 1e-9) || r.determinant() < 0)
+    throw InvalidInput(
+        "placing a program: the transform is not a rigid motion (rotation and "
+        "translation)");
+  unitOrThrow(params.defaultAxis, "the default axis is zero or not finite");
+  if (!std::isfinite(params.contactSearchMm) || !(params.contactSearchMm > 0))
+    throw InvalidInput("placing a program: contact search distance " +
+                       number(params.contactSearchMm) + " mm is not positive");
+  if (!std::isfinite(params.angleSnapDeg) || params.angleSnapDeg < 0)
+    throw InvalidInput("placing a program: angle snap " + number(params.angleSnapDeg) +
+                       " deg is negative");
+  if (params.toolIndex < 0)
+    throw InvalidInput("placing a program: tool index " + std::to_string(params.toolIndex) +
+                       " is negative");
+}
+
+/// A program point in the part frame.
+struct PlacedPoint {
+  int source = 0;
+  bool passStart = false;
+  Vec3 position = Vec3::Zero();
+  std::optional<Vec3> axis;
+  std::optional<Vec3> normal;
+};
+
+/// Point @p i rescaled and moved into the part frame.
+PlacedPoint toPartFrame(const ClProgram& program, int i, const Eigen::Isometry3d& transform,
+                        double scale) {
+  const ClPoint& p = program.points[static_cast<std::size_t>(i)];
+  if (!p.positionMm.allFinite())
+    throw InvalidInput("placing a program: " + where(program, i) + ": position is not finite");
+  PlacedPoint q;
+  q.source = i;
+  q.position = transform * (scale * p.positionMm);
+  if (p.axis)
+    q.axis = transform.linear() *
+             unitOrThrow(*p.axis, where(program, i) + ": tool axis is zero or not finite");
+  if (p.normal)
+    q.normal = transform.linear() *
+               unitOrThrow(*p.normal, where(program, i) + ": normal is zero or not finite");
+  return q;
+}
+
+/// Keeps the points the params ask for, rescaled and transformed; a pass starts at the first
+/// point, after a dropped point, and where a Cut follows a Cut of another program path.
+std::vector<PlacedPoint> keptPoints(const ClProgram& program, const PlaceProgramParams& params,
+                                    double scale, std::vector<ClMessage>& warnings) {
+  std::vector<PlacedPoint> out;
+  int dropped = 0, firstDroppedLine = 0;
+  bool gap = true;
+  const ClPoint* previous = nullptr;
+  for (int i = 0; i < static_cast<int>(program.points.size()); ++i) {
+    const ClPoint& p = program.points[static_cast<std::size_t>(i)];
+    const bool keep = p.move == planning::MoveKind::Cut ||
+                      (p.move == planning::MoveKind::Link && params.includeLinks) ||
+                      (p.move == planning::MoveKind::Rapid && params.includeRapids);
+    if (!keep) {
+      if (dropped++ == 0) firstDroppedLine = p.sourceLine;
+      gap = true;
+      continue;
+    }
+    PlacedPoint q = toPartFrame(program, i, params.transform, scale);
+    q.passStart = gap || (previous && previous->move == planning::MoveKind::Cut &&
+                          p.move == planning::MoveKind::Cut && previous->path != p.path);
+    out.push_back(q);
+    previous = &p;
+    gap = false;
+  }
+  if (dropped > 0)
+    warnings.push_back({firstDroppedLine, std::to_string(dropped) +
+                                              " link or rapid points left out; the path "
+                                              "starts a new pass after each"});
+  if (out.empty()) throw InvalidInput("placing a program: no point is left to place");
+  return out;
+}
+
+/// The part's surface as its raster mesh, for nearest-point queries with the tool side known.
+class PartSurface {
+ public:
+  explicit PartSurface(const ddf::DisplacementField& part)
+      : part_(part), raster_(ddf::extractRasterMesh(part)), distance_(raster_.mesh) {
+    const int m = part.resolution();
+    perFace_ = (m - 1) * (m - 1);
+    const ddf::TriangleMesh support = ddf::extractSupportMesh(part);
+    outward_.resize(static_cast<std::size_t>(part.faceCount()));
+    for (int f = 0; f < part.faceCount(); ++f) {
+      const auto& t = support.triangles[static_cast<std::size_t>(f)];
+      const Vec3 a = support.vertices[t[0]], b = support.vertices[t[1]], c = support.vertices[t[2]];
+      const Vec3 v = part.vector(t[0]) + part.vector(t[1]) + part.vector(t[2]);
+      outward_[static_cast<std::size_t>(f)] = (b - a).cross(c - a).dot(v) >= 0 ? 1.0 : -1.0;
+    }
+  }
+
+  struct Hit {
+    Vec3 point;
+    double signedDistance;  // + on the side the vectors point to
+    int face;
+  };
+
+  Hit nearest(const Vec3& p) const {
+    const auto c = distance_.closestPoint(p);
+    if (!c) throw InvalidInput("placing a program: a tool position is not finite");
+    const int face = c->triangle / perFace_;
+    return {c->point, outward_[static_cast<std::size_t>(face)] * c->signedDistance, face};
+  }
+
+  /// Unit normal at @p hit towards the tool side.
+  Vec3 normal(const Hit& hit) const {
+    if (const auto loc = ddf::locateOnFace(part_, hit.face, hit.point))
+      return planning::smoothSurfaceNormal(part_, *loc);
+    const Vec3 v = part_.vectorAt(hit.face, Vec3::Constant(1.0 / 3.0));
+    return v.normalized();
+  }
+
+  /// The foot of @p c on the smooth surface (c - foot along the smooth normal there), from
+  /// @p hit, the nearest point of the faceted raster mesh: the facets' normals jump, which
+  /// shifts the nearest point of a distant c sideways by up to |c - hit| times the jump.
+  /// Fixed-point steps: project c onto the tangent plane at the foot and find the mesh there.
+  std::pair<Hit, Vec3> smoothFoot(const Vec3& c, Hit hit) const {
+    Vec3 n = normal(hit);
+    for (int step = 0; step < 4; ++step) {
+      const Vec3 q = c - (c - hit.point).dot(n) * n;
+      const Hit next = nearest(q);
+      const double moved = (next.point - hit.point).norm();
+      hit = next;
+      n = normal(hit);
+      if (moved < 1e-9) break;
+    }
+    // The length, not the normal component: a tool beside the part's border is far from it.
+    hit.signedDistance = std::copysign((c - hit.point).norm(), (c - hit.point).dot(n));
+    return {hit, n};
+  }
+
+ private:
+  const ddf::DisplacementField& part_;
+  ddf::RasterMesh raster_;
+  planning::MeshDistance distance_;
+  int perFace_ = 1;
+  std::vector<double> outward_;
+};
+
+/// Unit tangential part of @p feed at normal @p n, or a stable fallback.
+Vec3 tangentialFeed(const Vec3& feed, const Vec3& n, const Vec3& hint) {
+  for (const Vec3& d : {feed, hint}) {
+    const Vec3 t = d - d.dot(n) * n;
+    if (t.norm() > 1e-9 * std::max(1.0, d.norm())) return t.normalized();
+  }
+  return perpendicularTo(n);
+}
+
+/// Feed direction at kept point @p k: towards the next point of its pass, else from the
+/// previous one.
+Vec3 feedAt(const std::vector<PlacedPoint>& pts, std::size_t k) {
+  if (k + 1 < pts.size() && !pts[k + 1].passStart) return pts[k + 1].position - pts[k].position;
+  if (k > 0 && !pts[k].passStart) return pts[k].position - pts[k - 1].position;
+  return Vec3::Zero();
+}
+
+struct Reference {
+  Vec3 point;
+  Vec3 axis;
+};
+
+/// Placement parameters and feed that turn @p tool's spindle axis onto @p axis at normal @p n.
+std::pair<planning::PlacementParams, Vec3> anglesForAxis(ToolKind kind, const Vec3& n,
+                                                         const Vec3& t, const Vec3& axis) {
+  constexpr double kDeg = 180.0 / std::numbers::pi;
+  planning::PlacementParams pp;
+  if (isWheel(kind)) {
+    const Vec3 across = axis - axis.dot(n) * n;
+    if (across.norm() < 1e-9) throw InvalidInput("the wheel axis lies along the surface normal");
+    pp.tiltDeg = std::asin(std::clamp(axis.dot(n), -1.0, 1.0)) * kDeg;
+    return {pp, across.normalized().cross(n)};
+  }
+  if (kind == ToolKind::Sphere) return {pp, t};
+  const Vec3 b = n.cross(t);
+  pp.leadDeg = std::asin(std::clamp(axis.dot(t), -1.0, 1.0)) * kDeg;
+  pp.tiltDeg = std::atan2(-axis.dot(b), axis.dot(n)) * kDeg;
+  return {pp, t};
+}
+
+/// Reference point and axis of a Contact point.
+Reference contactReference(const planning::Tool& tool, const PartSurface& surface,
+                           const std::vector<PlacedPoint>& pts, std::size_t k,
+                           const PlaceProgramParams& params, const std::string& name) {
+  const PlacedPoint& p = pts[k];
+  Vec3 n;
+  if (p.normal) {
+    n = *p.normal;
+  } else if (params.normalsFromPart) {
+    n = surface.normal(surface.nearest(p.position));
+  } else {
+    throw InvalidInput("placing a program: " + name +
+                       ": the contact program needs normals (the point has none)");
+  }
+  const Vec3 hint = p.axis.value_or(perpendicularTo(n));
+  const Vec3 t = tangentialFeed(feedAt(pts, k), n, hint);
+  planning::PlacementParams pp;
+  Vec3 feed = t;
+  if (p.axis) std::tie(pp, feed) = anglesForAxis(tool.kind, n, t, *p.axis);
+  // A flat bottom or a straight mantle touches with its rim at any non-zero angle: rounding
+  // noise in axes and normals must not move the reference point by a radius or half a width.
+  if (std::abs(pp.leadDeg) < params.angleSnapDeg) pp.leadDeg = 0.0;
+  if (std::abs(pp.tiltDeg) < params.angleSnapDeg) pp.tiltDeg = 0.0;
+  const planning::ToolPlacement placed = planning::placeToolDetailed(tool, p.position, n, feed, pp);
+  const Vec3 axis = placed.pose.linear() * spindleInToolFrame(tool.kind);
+  return {placed.pose.translation(), p.axis && tool.kind != ToolKind::Sphere ? *p.axis : axis};
+}
+
+std::vector<Reference> references(const ClProgram& program, const planning::Tool& tool,
+                                  const PartSurface& surface, const std::vector<PlacedPoint>& pts,
+                                  const PlaceProgramParams& params) {
+  const Vec3 defaultAxis = (params.transform.linear() * params.defaultAxis).normalized();
+  std::vector<Reference> out;
+  out.reserve(pts.size());
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    if (program.pointKind == ClPointKind::ToolReference) {
+      out.push_back({pts[k].position, pts[k].axis.value_or(defaultAxis)});
+      continue;
+    }
+    const std::string name = where(program, pts[k].source);
+    try {
+      out.push_back(contactReference(tool, surface, pts, k, params, name));
+    } catch (const InvalidInput& e) {
+      if (std::string(e.what()).starts_with("placing a program")) throw;
+      std::throw_with_nested(
+          InvalidInput("placing a program: " + name + ": cannot place the tool"));
+    }
+    if (k % 256 == 255) reportProgress(params.progress, 0.5 * double(k) / double(pts.size()));
+  }
+  return out;
+}
+
+/// Rotations mapping the spindle axis onto each reference axis, carried along by the smallest
+/// rotation and re-orthonormalised so the spindle column is the axis to rounding.
+std::vector<Eigen::Matrix3d> frames(ToolKind kind, const std::vector<Reference>& refs) {
+  std::vector<Eigen::Matrix3d> out;
+  out.reserve(refs.size());
+  const bool cutter = isCutter(kind);
+  const int spin = cutter ? 2 : 0, side = cutter ? 0 : 2;
+  Vec3 sideVec = perpendicularTo(refs.front().axis);
+  Vec3 previous = refs.front().axis;
+  for (const Reference& r : refs) {
+    const Vec3 a = r.axis.normalized();
+    sideVec = Eigen::Quaterniond::FromTwoVectors(previous, a) * sideVec;
+    sideVec = sideVec - sideVec.dot(a) * a;
+    sideVec = sideVec.norm() > 1e-6 ? sideVec.normalized() : perpendicularTo(a);
+    Eigen::Matrix3d m;
+    m.col(spin) = a;
+    m.col(side) = sideVec;
+    m.col(1) = cutter ? a.cross(sideVec) : sideVec.cross(a);
+    out.push_back(m);
+    previous = a;
+  }
+  return out;
+}
+
+/// Core samples of the tool in its own frame with their reach (see placeProgram()).
+std::vector<std::pair<Vec3, double>> coreSamples(const planning::Tool& tool) {
+  const double r = tool.radiusMm;
+  switch (tool.kind) {
+    case ToolKind::BallEnd:
+      return {{Vec3(0, 0, r), r}};
+    case ToolKind::FlatEnd:
+    case ToolKind::TorusCutter: {
+      const bool torus = tool.kind == ToolKind::TorusCutter;
+      const double e = torus ? tool.edgeRadiusMm : 0.0;
+      std::vector<std::pair<Vec3, double>> out{{Vec3::Zero(), 0.0}};
+      for (int i = 0; i < kRimSamples; ++i) {
+        const double phi = 2 * std::numbers::pi * i / kRimSamples;
+        out.push_back({Vec3((r - e) * std::cos(phi), (r - e) * std::sin(phi), e), e});
+      }
+      return out;
+    }
+    default:
+      return {{Vec3::Zero(), r}};
+  }
+}
+
+struct PoseContact {
+  Vec3 point;
+  Vec3 normal;
+  double distanceMm;
+};
+
+/// The contact of a pose: the core sample nearest to the raster mesh (minus its reach), its
+/// foot refined on the smooth surface.
+PoseContact contactOf(const PartSurface& surface, const Eigen::Isometry3d& pose,
+                      const std::vector<std::pair<Vec3, double>>& samples) {
+  PartSurface::Hit best{};
+  Vec3 core = Vec3::Zero();
+  double bestGap = std::numeric_limits<double>::infinity(), reach = 0.0;
+  for (const auto& [local, sampleReach] : samples) {
+    const Vec3 c = pose * local;
+    const PartSurface::Hit hit = surface.nearest(c);
+    if (hit.signedDistance - sampleReach < bestGap - 1e-9) {
+      best = hit;
+      core = c;
+      reach = sampleReach;
+      bestGap = hit.signedDistance - sampleReach;
+    }
+  }
+  const auto [foot, n] = surface.smoothFoot(core, best);
+  return {foot.point, n, foot.signedDistance - reach};
+}
+
+/// Off-part warning and feed of a placed program.
+void summarize(const ClProgram& program, int kept, int firstOff, double scale,
+               const PlaceProgramParams& params, ImportedPath& out) {
+  planning::ToolPath& path = out.path;
+  if (out.pointsOffPart > 0)
+    out.warnings.push_back({program.points[static_cast<std::size_t>(firstOff)].sourceLine,
+                            std::to_string(out.pointsOffPart) + " of " + std::to_string(kept) +
+                                " points lie farther than " + number(params.contactSearchMm) +
+                                " mm from the part (first: " + where(program, firstOff) + ")"});
+  const auto feed = std::find_if(
+      program.points.begin(), program.points.end(),
+      [](const ClPoint& p) { return p.move == planning::MoveKind::Cut && p.feedMmPerMin > 0; });
+  if (feed != program.points.end()) {
+    path.feedMmPerMin = feed->feedMmPerMin * scale;
+  } else {
+    out.warnings.push_back({0, "the program gives no cutting feed; the path keeps " +
+                                   number(path.feedMmPerMin) + " mm/min"});
+  }
+}
+
+}  // namespace
+
+ImportedPath placeProgram(const ClProgram& program, const planning::Tool& tool,
+                          const ddf::DisplacementField& part, const PlaceProgramParams& params) {
+  validate(program, tool, params);
+  ImportedPath out;
+  const double scale = params.actualUnit
+                           ? millimetresPer(*params.actualUnit) / millimetresPer(program.sourceUnit)
+                           : 1.0;
+  const std::vector<PlacedPoint> pts = keptPoints(program, params, scale, out.warnings);
+  const PartSurface surface(part);
+  const std::vector<Reference> refs = references(program, tool, surface, pts, params);
+  const std::vector<Eigen::Matrix3d> rot = frames(tool.kind, refs);
+  const auto samples = coreSamples(tool);
+
+  planning::ToolPath& path = out.path;
+  path.name = !params.name.empty()        ? params.name
+              : !program.partName.empty() ? program.partName
+                                          : "imported path";
+  path.tool = params.toolIndex;
+  int firstOff = -1;
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    planning::PathPose pose;
+    pose.pose.linear() = rot[k];
+    pose.pose.translation() = refs[k].point;
+    const PoseContact c = contactOf(surface, pose.pose, samples);
+    pose.contact = c.point;
+    if (pts[k].passStart) path.passStarts.push_back(static_cast<int>(k));
+    path.poses.push_back(pose);
+    out.normals.push_back(c.normal);
+    const double bestGap = c.distanceMm;
+    out.contactDistancesMm.push_back(bestGap);
+    out.sourcePoints.push_back(pts[k].source);
+    if (std::abs(bestGap) > params.contactSearchMm) {
+      if (out.pointsOffPart++ == 0) firstOff = pts[k].source;
+    } else {
+      out.maxContactDistanceMm = std::max(out.maxContactDistanceMm, std::abs(bestGap));
+    }
+    if (k % 256 == 255) reportProgress(params.progress, 0.5 + 0.5 * double(k) / double(pts.size()));
+  }
+  summarize(program, static_cast<int>(pts.size()), firstOff, scale, params, out);
+  reportProgress(params.progress, 1.0);
+  return out;
+}
+
+}  // namespace ddfcam::io
