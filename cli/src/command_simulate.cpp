@@ -2,7 +2,6 @@
 // ddfcam-cli simulate: grinds a tool-path CSV into a part, writes the result, an error map and
 // a JSON report of the deviation statistics (dissertation sec. 8.4).
 #include <ddfcam/ddf/analytic_generators.h>
-#include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/error.h>
 #include <ddfcam/io/ddf_file.h>
 #include <ddfcam/io/mesh_io.h>
@@ -19,7 +18,9 @@
 #include "arguments.h"
 #include "commands.h"
 #include "console.h"
+#include "error_map_vtp.h"
 #include "json_writer.h"
+#include "simulate_import.h"
 #include "simulate_inputs.h"
 
 #include <algorithm>
@@ -37,8 +38,9 @@ namespace ddfcam::cli {
 namespace {
 
 constexpr const char* kHelp =
-    "usage: ddfcam-cli simulate PART --paths PATHS.csv -o OUT.ddf [options]\n\n"
-    "Grinds the cut moves of a tool-path CSV (as written by 'ddfcam-cli plan') into PART (a .ddf\n"
+    "usage: ddfcam-cli simulate PART --paths FILE -o OUT.ddf [options]\n\n"
+    "Grinds the cut moves of a tool-path file (a CSV as written by 'ddfcam-cli plan', APT/CLDATA,\n"
+    "ROS toolpath YAML or FANUC .ls; see 'ddfcam-cli paths') into PART (a .ddf\n"
     "file, a .stl/.obj/.ply/.off mesh converted with heights 0 as 'plan' does, a .ddfproj\n"
     "project's part, or 'demo'). PART's heights are the desired surface; the workpiece is that\n"
     "surface raised by the allowance along its normal, or a stock mesh. The tool is placed at\n"
@@ -47,9 +49,17 @@ constexpr const char* kHelp =
     "surface; every pose is cut by the DDF depth buffer (or by Preston removal). Writes the\n"
     "simulated part, optionally the signed deviation from the desired surface (mm along its\n"
     "normal; > 0 material left, < 0 overcut) as a .vtp error map and the statistics as JSON,\n"
-    "and prints a summary.\n\n"
+    "and prints a summary. APT, YAML and .ls programs and CSV tables without normals are placed\n"
+    "by their own tool axes (contacts found on PART; a point without an axis points +z); their\n"
+    "link moves are cut, rapid moves only with --keep-rapids.\n\n"
     "options:\n"
-    "  --paths FILE             tool-path CSV (required); link and rapid rows are not cut\n"
+    "  --paths FILE             tool-path file (required): CSV (link and rapid rows are not\n"
+    "                           cut), APT/CLDATA, ROS toolpath YAML or FANUC .ls\n"
+    "  --path-units mm|in|m     the file's numbers are in this unit (overrides the file's)\n"
+    "  --rotate AX,AY,AZ        rotate the path about the part's x, y, z axes, deg, as\n"
+    "                           Rz(AZ) Ry(AY) Rx(AX) (x first), before --translate\n"
+    "  --translate X,Y,Z        move the path by this vector, mm, after the unit and rotation\n"
+    "  --keep-rapids            also place and cut the rapid moves (not for CSVs with normals)\n"
     "  -o, --output FILE        simulated part as .ddf (required)\n"
     "  --error-map FILE         deviation per raster point as VTK PolyData (.vtp)\n"
     "  --report FILE            statistics as JSON\n"
@@ -64,8 +74,9 @@ constexpr const char* kHelp =
     "  --tool-file FILE --tool-name NAME\n"
     "                           take the tool NAME from a tool library file instead of --tool,\n"
     "                           --radius, --width, --corner-radius\n"
-    "  --lead DEG, --tilt DEG   lead and tilt angles of the tool at the contact (default 0)\n"
-    "sampling along the feed (default: one pose per CSV row):\n"
+    "  --lead DEG, --tilt DEG   lead and tilt angles of the tool at the contact (default 0;\n"
+    "                           CSVs with normals only: programs carry their tool axes)\n"
+    "sampling along the feed (CSVs with normals only; default: one pose per CSV row):\n"
     "  --sample-tolerance MM    resample every pass at the step derived from this tolerance\n"
     "                           (feed chord, raster spacing, tool profile cusp; default rule\n"
     "                           tolerance = --tolerance when only --step is given)\n"
@@ -111,40 +122,12 @@ ddf::DisplacementField loadInput(const std::filesystem::path& input) {
   return part;
 }
 
-/// The simulated surface along its raster lattice with the deviation of each point's copy in
-/// the lowest-index face (the copy whose position the mesh vertex takes).
-ddf::TriangleMesh errorMapMesh(const ddf::DisplacementField& produced,
-                               const planning::ScalarField& deviation,
-                               const planning::ToleranceBand& band, io::VtpPointData& data) {
-  ddf::RasterMesh raster = ddf::extractRasterMesh(produced);
-  const std::size_t perFace = produced.pointsPerFace();
-  std::vector<float> values, classes;
-  values.reserve(raster.vertexPoint.size());
-  for (const ddf::PointId p : raster.vertexPoint) {
-    int face = produced.faceCount();
-    float value = std::numeric_limits<float>::quiet_NaN();
-    produced.topology().forEachCopy(p, [&](ddf::PointCopy c) {
-      if (c.face >= face) return;
-      face = c.face;
-      value = deviation.values[static_cast<std::size_t>(c.face) * perFace + c.local];
-    });
-    values.push_back(value);
-    const auto cls = planning::classify(value, band);
-    classes.push_back(std::isnan(value)                               ? value
-                      : cls == planning::ToleranceClass::Overcut      ? -1.0f
-                      : cls == planning::ToleranceClass::MaterialLeft ? 1.0f
-                                                                      : 0.0f);
-  }
-  data.scalars.push_back({"deviation_mm", std::move(values)});
-  data.scalars.push_back({"tolerance_class", std::move(classes)});
-  return std::move(raster.mesh);
-}
-
 struct SimulationResult {
   planning::GrindingReport grinding;
   std::optional<planning::PenetrationCorrectionReport> correction;
   std::optional<planning::PrestonReport> preston;
   std::vector<planning::PassSampling> sampling;
+  ImportFacts import;
   planning::ErrorStatistics stats;
   int passes = 0, poses = 0;
   double removedVolumeMm3 = 0, prestonFeedMmPerMin = 0;
@@ -223,6 +206,7 @@ void writeReport(const SimulateOptions& o, const SimulationResult& r) {
   JsonWriter json;
   json.beginObject();
   json.key("part").value(o.input.string()).key("paths").value(o.paths.string());
+  writeImportFacts(json, r.import);
   writeTool(json, o);
   if (o.stockMesh)
     json.key("stock_mesh").value(o.stockMesh->string());
@@ -345,7 +329,8 @@ int runSimulate(std::span<const std::string> words) {
   const SimulateOptions o = parseSimulateOptions(words);
   SimulationResult r;
   const ddf::DisplacementField goal = loadInput(o.input);
-  CsvPath path = pathFromCsv(io::readToolPathCsv(o.paths), goal, o, o.paths.filename().string());
+  CsvPath path = importSimulationPath(goal, o);
+  r.import = path.facts;
   r.passes = static_cast<int>(path.path.passStarts.size());
   r.poses = static_cast<int>(path.path.poses.size());
   r.sampling = path.sampling;

@@ -24,5 +24,6 @@ extern const Command kCurvatureCommand;  // section C
 extern const Command kPlanCommand;       // section L
 extern const Command kSimulateCommand;   // section BV
 extern const Command kRunCommand;        // section JB
+extern const Command kPathsCommand;      // section CP
 
 }  // namespace ddfcam::cli

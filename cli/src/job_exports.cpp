@@ -1,51 +1,23 @@
 // SPDX-License-Identifier: MIT
 // ddfcam-cli run: the files of a job: project, path exports, error map, screenshots, report.
-#include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/error.h>
 #include <ddfcam/io/project_file.h>
 #include <ddfcam/io/vtp_writer.h>
 
+#include "error_map_vtp.h"
 #include "job_exports.h"
 #include "job_runner.h"
 
 #include <sys/wait.h>
 
-#include <cmath>
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <limits>
 
 namespace ddfcam::cli {
 
 namespace {
-
-/// The produced surface along its raster lattice with the deviation of each point's copy in
-/// the lowest-index face, and its tolerance class (-1 overcut, 0 in tolerance, 1 material left).
-ddf::TriangleMesh errorMapMesh(const ddf::DisplacementField& produced,
-                               const planning::ScalarField& deviation,
-                               const planning::ToleranceBand& band, io::VtpPointData& data) {
-  ddf::RasterMesh raster = ddf::extractRasterMesh(produced);
-  const std::size_t perFace = produced.pointsPerFace();
-  std::vector<float> values, classes;
-  for (const ddf::PointId p : raster.vertexPoint) {
-    int face = produced.faceCount();
-    float value = std::numeric_limits<float>::quiet_NaN();
-    produced.topology().forEachCopy(p, [&](ddf::PointCopy c) {
-      if (c.face >= face) return;
-      face = c.face;
-      value = deviation.values[static_cast<std::size_t>(c.face) * perFace + c.local];
-    });
-    values.push_back(value);
-    const planning::ToleranceClass cls = planning::classify(value, band);
-    classes.push_back(std::isnan(value)                               ? value
-                      : cls == planning::ToleranceClass::Overcut      ? -1.0f
-                      : cls == planning::ToleranceClass::MaterialLeft ? 1.0f
-                                                                      : 0.0f);
-  }
-  data.scalars.push_back({"deviation_mm", std::move(values)});
-  data.scalars.push_back({"tolerance_class", std::move(classes)});
-  return std::move(raster.mesh);
-}
 
 void writeErrorMap(const JobSpec& spec, JobResult& result) {
   if (!spec.errorMap.enabled || !spec.errorMap.vtp) return;
@@ -80,9 +52,16 @@ void writeScreenshots(const JobSpec& spec, JobResult& result, const JobOutputOpt
     result.notes.push_back("screenshots skipped: no workbench executable next to ddfcam-cli");
     return;
   }
+  // The error map, when there is one, is what a screenshot of a job is for.
+  const bool deviation = std::ranges::any_of(
+      result.project.fields, [](const planning::ScalarField& f) { return f.name == "deviation"; });
+  char band[160];
+  std::snprintf(band, sizeof band, " --field deviation --band %.17g,%.17g ",
+                spec.errorMap.band.lowerMm, spec.errorMap.band.upperMm);
   for (const std::filesystem::path& png : spec.screenshots) {
-    const std::string command = quoted(workbench) + " --screenshot " + quoted(png) + " " +
-                                quoted(spec.project) + " > /dev/null 2>&1 < /dev/null";
+    const std::string command = quoted(workbench) + " --screenshot " + quoted(png) +
+                                (deviation ? band : " ") + quoted(spec.project) +
+                                " > /dev/null 2>&1 < /dev/null";
     const int status = std::system(command.c_str());
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !std::filesystem::exists(png))
       throw IoError("the workbench could not render the screenshot " + png.string());

@@ -15,10 +15,10 @@ namespace {
 
 using ddfcam::cli::Command;
 
-constexpr std::array<const Command*, 8> kCommands = {
+constexpr std::array<const Command*, 9> kCommands = {
     &ddfcam::cli::kConvertCommand,  &ddfcam::cli::kExtractCommand,   &ddfcam::cli::kInfoCommand,
     &ddfcam::cli::kDemoCommand,     &ddfcam::cli::kCurvatureCommand, &ddfcam::cli::kPlanCommand,
-    &ddfcam::cli::kSimulateCommand, &ddfcam::cli::kRunCommand};
+    &ddfcam::cli::kSimulateCommand, &ddfcam::cli::kRunCommand,       &ddfcam::cli::kPathsCommand};
 
 void printUsage(std::FILE* out) {
   std::fprintf(out,

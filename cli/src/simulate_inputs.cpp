@@ -103,7 +103,11 @@ planning::Tool toolFromOptions(const Arguments& args, const std::string& kindNam
   return tool;
 }
 
-const std::array<OptionSpec, 28> kSpecs = {OptionSpec{"paths", '\0', true},
+const std::array<OptionSpec, 32> kSpecs = {OptionSpec{"paths", '\0', true},
+                                           OptionSpec{"path-units", '\0', true},
+                                           OptionSpec{"translate", '\0', true},
+                                           OptionSpec{"rotate", '\0', true},
+                                           OptionSpec{"keep-rapids", '\0', false},
                                            OptionSpec{"output", 'o', true},
                                            OptionSpec{"error-map", '\0', true},
                                            OptionSpec{"report", '\0', true},
@@ -151,7 +155,54 @@ void parseProcess(const Arguments& args, SimulateOptions& o) {
   p.infeedMm = args.positiveNumber("infeed").value_or(p.infeedMm);
 }
 
+// Three finite numbers "X,Y,Z" given for @p name, or zero.
+ddf::Vec3 triple(const Arguments& args, const std::string& name) {
+  const std::optional<std::string> text = args.value(name);
+  if (!text) return ddf::Vec3::Zero();
+  ddf::Vec3 v;
+  const char* at = text->data();
+  const char* const end = text->data() + text->size();
+  for (int i = 0; i < 3; ++i) {
+    if (i > 0 && (at == end || *at++ != ','))
+      throw UsageError("--" + name + " " + *text + ": expected three numbers X,Y,Z");
+    const auto [next, error] = std::from_chars(at, end, v[i]);
+    if (error != std::errc() || !std::isfinite(v[i]))
+      throw UsageError("--" + name + " " + *text + ": expected three numbers X,Y,Z");
+    at = next;
+  }
+  if (at != end) throw UsageError("--" + name + " " + *text + ": expected three numbers X,Y,Z");
+  return v;
+}
+
+ImportOptions parseImport(const Arguments& args) {
+  ImportOptions im;
+  if (const auto unit = args.value("path-units")) {
+    if (*unit == "mm")
+      im.unit = io::LengthUnit::Millimetre;
+    else if (*unit == "in")
+      im.unit = io::LengthUnit::Inch;
+    else if (*unit == "m")
+      im.unit = io::LengthUnit::Metre;
+    else
+      throw UsageError("--path-units " + *unit + ": expected mm|in|m");
+  }
+  im.translateMm = triple(args, "translate");
+  im.rotateDeg = triple(args, "rotate");
+  im.keepRapids = args.has("keep-rapids");
+  return im;
+}
+
 }  // namespace
+
+Eigen::Isometry3d ImportOptions::transform() const {
+  const ddf::Vec3 rad = rotateDeg * (M_PI / 180.0);
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.translate(translateMm);
+  t.rotate(Eigen::AngleAxisd(rad.z(), ddf::Vec3::UnitZ()) *
+           Eigen::AngleAxisd(rad.y(), ddf::Vec3::UnitY()) *
+           Eigen::AngleAxisd(rad.x(), ddf::Vec3::UnitX()));
+  return t;
+}
 
 SimulateOptions parseSimulateOptions(std::span<const std::string> words) {
   const Arguments args(words, kSpecs, "simulate");
@@ -173,6 +224,7 @@ SimulateOptions parseSimulateOptions(std::span<const std::string> words) {
   o.placement.tiltDeg = angle(args, "tilt");
   o.checkVConvexity = !args.has("no-vconvexity-check");
   parseProcess(args, o);
+  o.import = parseImport(args);
   if (args.has("tool-file")) {
     o.tool = toolFromLibrary(args);
     o.toolKind = std::string(planning::toolKindName(o.tool.kind));
@@ -212,7 +264,7 @@ CsvPath resampled(const CutRows& rows, const std::vector<ddf::Vec3>& contacts,
   sampling.name = source;
   planning::PlacedPath placed =
       planning::placeAlongPathDetailed(goal, passes, o.tool, 0, o.placement, sampling);
-  return {std::move(placed.path), {}, std::move(placed.passes)};
+  return {std::move(placed.path), {}, std::move(placed.passes), {}};
 }
 
 // Wheels keep the planned axis (feed = axis x n); other tools, or an axis along the normal,

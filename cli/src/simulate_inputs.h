@@ -3,11 +3,14 @@
 #pragma once
 
 #include <ddfcam/ddf/displacement_field.h>
+#include <ddfcam/io/cl_program.h>
 #include <ddfcam/io/tool_path_csv.h>
 #include <ddfcam/planning/path_sampling.h>
 #include <ddfcam/planning/tool.h>
 #include <ddfcam/planning/tool_orientation.h>
 #include <ddfcam/planning/tool_path.h>
+
+#include <Eigen/Geometry>
 
 #include <filesystem>
 #include <optional>
@@ -34,6 +37,18 @@ struct CorrectionOptions {
   int grid = 50;         ///< tangential grid cells per axis (default 50)
 };
 
+/// @brief How a path file is read and placed on the part (--path-units, --translate, --rotate,
+/// --keep-rapids).
+struct ImportOptions {
+  std::optional<io::LengthUnit> unit;         ///< --path-units (default: the file's own)
+  ddf::Vec3 translateMm = ddf::Vec3::Zero();  ///< --translate X,Y,Z, mm (default 0)
+  ddf::Vec3 rotateDeg = ddf::Vec3::Zero();    ///< --rotate AX,AY,AZ, deg (default 0)
+  bool keepRapids = false;                    ///< --keep-rapids (default false)
+
+  /// File frame -> part frame: Translation(translateMm) * Rz(AZ) * Ry(AY) * Rx(AX).
+  Eigen::Isometry3d transform() const;
+};
+
 /// @brief Everything the simulate command line chooses.
 struct SimulateOptions {
   std::filesystem::path input, paths, output;      ///< PART, --paths, -o
@@ -52,6 +67,7 @@ struct SimulateOptions {
   bool swept = false;                              ///< --swept (default false)
   CorrectionOptions correction;                    ///< --correct ...
   PrestonOptions preston;                          ///< --preston ...
+  ImportOptions import;                            ///< --path-units, --translate, ...
 
   /// True when the passes are resampled along the feed (--sample-tolerance or --step).
   bool resample() const { return sampleToleranceMm.has_value() || stepMm.has_value(); }
@@ -62,11 +78,24 @@ struct SimulateOptions {
 /// @throws IoError / InvalidInput if --tool-file cannot be read or has no tool --tool-name.
 SimulateOptions parseSimulateOptions(std::span<const std::string> words);
 
+/// @brief What reading and placing the path file found, for the report.
+struct ImportFacts {
+  std::string format;     ///< pathFormatName() of the file, e.g. "APT/CLDATA"
+  std::string unit;       ///< unit the file's numbers were taken in: "mm", "in" or "m"
+  std::string placement;  ///< "contacts" (CSV: --lead/--tilt at each contact) or "program axes"
+  int pointsRead = 0;     ///< points of the program read
+  int posesPlaced = 0;    ///< poses of the simulated path
+  int pointsOffPart = 0;  ///< poses whose contact lies farther than 2 mm from the part
+  double maxContactDistanceMm = 0.0;  ///< largest contact distance of the other poses, mm
+  int warnings = 0;                   ///< warnings of the reader and the placement
+};
+
 /// @brief The cut moves of a tool path and the contact normals.
 struct CsvPath {
   planning::ToolPath path;                       ///< poses at the CSV rows (or resampled)
   std::vector<ddf::Vec3> normals;                ///< #P unit normals, empty if resampled
   std::vector<planning::PassSampling> sampling;  ///< per pass when resampled, else empty
+  ImportFacts facts;                             ///< set by importSimulationPath()
 };
 
 /// @brief The cut rows of @p table as a tool path on @p goal: one pass per CSV path, the tool

@@ -3,10 +3,12 @@
 #include <ddfcam/error.h>
 #include <ddfcam/gui/app_setup.h>
 #include <ddfcam/gui/main_window.h>
+#include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/vtk_error_monitor.h>
 #include <ddfcam/log.h>
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QElapsedTimer>
 #include <QImage>
 #include <QString>
@@ -22,16 +24,29 @@
 namespace {
 
 constexpr const char* kUsage =
-    "usage: ddfcam [--screenshot OUT.png] [PART]\n"
+    "usage: ddfcam [--screenshot OUT.png [--field NAME [--band LO,HI]]] [PART]\n"
     "  PART                 a project (.ddfproj), a .ddf file or a mesh (.stl .obj .ply .off)\n"
     "                       converted to a DDF; without it the built-in demo part is shown\n"
     "  --screenshot OUT.png load PART, render one frame of the window to OUT.png and exit\n"
+    "  --field NAME         with --screenshot: colour the part by the project's field NAME\n"
+    "                       (e.g. the error map 'deviation' of a batch job)\n"
+    "  --band LO,HI         with --field: colour by the tolerance band LO <= 0 <= HI, mm\n"
     "  -h, --help           this text\n";
 
 struct Options {
   std::optional<std::string> screenshot;
   std::optional<std::string> part;
+  std::optional<std::string> field;
+  std::optional<ddfcam::planning::ToleranceBand> band;
 };
+
+/// "LO,HI" as a tolerance band, or nullopt if it is not two numbers.
+std::optional<ddfcam::planning::ToleranceBand> parseBand(const std::string& text) {
+  double lo = 0.0, hi = 0.0;
+  char rest = 0;
+  if (std::sscanf(text.c_str(), "%lf,%lf%c", &lo, &hi, &rest) != 2) return std::nullopt;
+  return ddfcam::planning::ToleranceBand{lo, hi};
+}
 
 /// Parsed before QApplication exists, so that --help and argument errors need no display.
 std::optional<Options> parseArguments(int argc, char** argv, int& exitCode) {
@@ -45,6 +60,10 @@ std::optional<Options> parseArguments(int argc, char** argv, int& exitCode) {
     }
     if (arg == "--screenshot" && i + 1 < argc) {
       options.screenshot = argv[++i];
+    } else if (arg == "--field" && i + 1 < argc) {
+      options.field = argv[++i];
+    } else if (arg == "--band" && i + 1 < argc && (options.band = parseBand(argv[i + 1]))) {
+      ++i;
     } else if (!arg.empty() && arg[0] != '-' && !options.part) {
       options.part = arg;
     } else {
@@ -56,13 +75,33 @@ std::optional<Options> parseArguments(int argc, char** argv, int& exitCode) {
   return options;
 }
 
-/// Shows the window until it is exposed, grabs it (3D view included) and writes @p out.
-int writeScreenshot(ddfcam::gui::MainWindow& window, const QString& out) {
+/// Colours the part by the field that @p options name (and its tolerance band), if any.
+/// @return false, with a message on stderr, if the project has no such field.
+bool showRequestedField(ddfcam::gui::MainWindow& window, const Options& options) {
+  if (!options.field) return true;
+  // The region colours lie over the part's surface; a person unticks them to see a field.
+  if (auto* regions = window.findChild<QCheckBox*>("showRegionColours")) regions->setChecked(false);
+  try {
+    window.partView().showField(*options.field);
+    if (options.band) window.partView().setToleranceBand(*options.band);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ddfcam: --field: %s\n", ddfcam::unrollMessage(e).c_str());
+    return false;
+  }
+  return true;
+}
+
+/// Shows the window until it is exposed, colours the part by the requested field, grabs the
+/// window (3D view included) and writes the screenshot.
+int writeScreenshot(ddfcam::gui::MainWindow& window, const Options& options) {
+  const QString out = QString::fromStdString(*options.screenshot);
   window.show();
   QElapsedTimer timer;
   timer.start();
   while (!(window.windowHandle() && window.windowHandle()->isExposed()) && timer.elapsed() < 5000)
     QApplication::processEvents(QEventLoop::AllEvents, 50);
+  QApplication::processEvents();
+  if (!showRequestedField(window, options)) return 1;
   QApplication::processEvents();
   const QImage image = window.grab().toImage();
   if (image.isNull() || !image.save(out)) {
@@ -103,7 +142,7 @@ int runWorkbench(QApplication& app, const Options& options) {
   if (options.part) window->openPath(QString::fromStdString(*options.part));
   if (options.screenshot) {
     if (!window->waitForJobs(600'000) || failed) return 1;
-    return writeScreenshot(*window, QString::fromStdString(*options.screenshot));
+    return writeScreenshot(*window, options);
   }
   window->show();
   return app.exec();

@@ -7,6 +7,7 @@
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/document_command.h>
 #include <ddfcam/gui/project_actions.h>
+#include <ddfcam/io/cutter_tool.h>
 #include <ddfcam/io/path_file.h>
 #include <ddfcam/planning/project.h>
 
@@ -103,7 +104,7 @@ void placeAndAdd(const QString& file, const io::ClProgram& program,
   std::optional<planning::Tool> newTool;
   if (options.toolIndex < 0) {
     if (!program.cutter) throw InvalidInput("the file has no CUTTER record to make a tool from");
-    newTool = toolFromCutter(*program.cutter, program.toolName.empty()
+    newTool = io::toolFromCutter(*program.cutter, program.toolName.empty()
                                                   ? QFileInfo(file).baseName().toStdString()
                                                   : program.toolName);
   } else if (options.toolIndex >= static_cast<int>(project.tools.size())) {
@@ -171,27 +172,6 @@ Eigen::Isometry3d importTransform(const PathImportOptions& o) {
                    .toRotationMatrix();
   t.translation() = o.translationMm;
   return t;
-}
-
-planning::Tool toolFromCutter(const io::ClCutter& c, const std::string& name) {
-  const double radius = 0.5 * c.diameterMm;
-  if (!(radius > 0.0) || !(c.cornerRadiusMm >= 0.0) || c.cornerRadiusMm > radius + 1e-9)
-    throw InvalidInput("CUTTER/" + std::to_string(c.diameterMm) + "," +
-                       std::to_string(c.cornerRadiusMm) + " gives no usable tool");
-  planning::Tool tool;
-  tool.name = name.empty() ? "imported cutter" : name;
-  tool.radiusMm = radius;
-  tool.widthMm = c.heightMm > 0.0 ? c.heightMm : 2.0 * c.diameterMm;
-  const double tolerance = 1e-6 * radius;
-  if (std::abs(c.cornerRadiusMm - radius) <= tolerance) {
-    tool.kind = planning::ToolKind::BallEnd;
-  } else if (c.cornerRadiusMm <= tolerance) {
-    tool.kind = planning::ToolKind::FlatEnd;
-  } else {
-    tool.kind = planning::ToolKind::TorusCutter;
-    tool.edgeRadiusMm = c.cornerRadiusMm;
-  }
-  return tool;
 }
 
 PathImportOptions initialImportOptions(const PathImportRequest& request) {

@@ -9,7 +9,8 @@
 namespace ddfcam::io::detail {
 
 bool interpolateAptArc(const AptCircle& circle, const ddf::Vec3& startMm, const ddf::Vec3& endMm,
-                       double chordToleranceMm, std::vector<ddf::Vec3>& out, std::string& problem) {
+                       double chordToleranceMm, std::size_t maxPoints, std::vector<ddf::Vec3>& out,
+                       std::string& problem) {
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
   const ddf::Vec3& a = circle.axis;
   const double r = circle.radiusMm;
@@ -37,11 +38,18 @@ bool interpolateAptArc(const AptCircle& circle, const ddf::Vec3& startMm, const 
                           ? std::numbers::pi / 2.0
                           : std::min(std::numbers::pi / 2.0, 2.0 * std::acos(1.0 - tolerance / r));
   const double pieces = std::ceil(turn / step);
-  if (!(pieces <= 1e6)) {
+  if (!(pieces <= kMaxAptArcChords)) {
     problem = "the arc needs more than 1000000 chords at the chord tolerance";
     return false;
   }
   const int n = std::max(1, static_cast<int>(pieces));
+  if (static_cast<std::size_t>(n - 1) > maxPoints) {
+    problem = "the arc needs " + std::to_string(n - 1) + " points at the chord tolerance, " +
+              "more than the " + std::to_string(maxPoints) +
+              " left of the cap on the interpolated points of all arcs of a program";
+    return false;
+  }
+  out.reserve(out.size() + static_cast<std::size_t>(n - 1));
   for (int k = 1; k < n; ++k) {
     const double t = static_cast<double>(k) / n;
     const double phi = turn * t;

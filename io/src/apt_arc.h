@@ -4,10 +4,15 @@
 
 #include <ddfcam/ddf/support_mesh.h>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace ddfcam::io::detail {
+
+/// Most chords one CIRCLE arc may be cut into (a cap on top of the reader's cap on the radius
+/// and on the points of all arcs of a program).
+inline constexpr double kMaxAptArcChords = 1e6;
 
 /// @brief A CIRCLE record converted to mm.
 struct AptCircle {
@@ -24,9 +29,13 @@ struct AptCircle {
 /// coincident start and end make a full circle. Points lie at exactly radiusMm from the axis;
 /// their height along the axis goes linearly from start to end (helix). Every chord (the
 /// first from @p startMm, the last to @p endMm) is within @p chordToleranceMm of the arc.
+/// @param maxPoints most points the caller accepts (its remaining budget); nothing is appended
+/// to @p out when the arc needs more.
 /// @return false with @p problem set if start or end is not at the radius (within
-/// radiusToleranceMm), or the arc needs more than 1e6 chords.
+/// radiusToleranceMm), or the arc needs more than kMaxAptArcChords chords or more than
+/// @p maxPoints points.
 bool interpolateAptArc(const AptCircle& circle, const ddf::Vec3& startMm, const ddf::Vec3& endMm,
-                       double chordToleranceMm, std::vector<ddf::Vec3>& out, std::string& problem);
+                       double chordToleranceMm, std::size_t maxPoints, std::vector<ddf::Vec3>& out,
+                       std::string& problem);
 
 }  // namespace ddfcam::io::detail

@@ -6,6 +6,7 @@
 #include "apt_lexer.h"
 #include "apt_tool_records.h"
 #include "file_access.h"
+#include "path_file_limits.h"
 
 #include <ddfcam/error.h>
 
@@ -20,6 +21,11 @@ using planning::MoveKind;
 
 constexpr std::size_t kMaxPoints = 50'000'000;
 constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t{1} << 30;
+/// Largest CIRCLE radius, mm (1 km): far beyond any machine. Bounds the chords of one arc.
+constexpr double kMaxArcRadiusMm = 1e6;
+/// Most points interpolated for all the CIRCLE records of one program together: a few
+/// hundred bytes of CIRCLE records must not expand into gigabytes of points.
+constexpr std::size_t kMaxArcPoints = 1'000'000;
 
 /// The length unit named by a UNITS value or a feed word; nullopt for any other word.
 std::optional<LengthUnit> unitWord(std::string_view word) {
@@ -145,21 +151,30 @@ class AptParser {
     return {v[first], v[first + 1], v[first + 2]};
   }
 
+  /// Values @p first..+2 of @p v as a position in mm, checked after the unit conversion.
+  ddf::Vec3 positionMm(const AptRecord& r, const std::vector<double>& v, std::size_t first) const {
+    const ddf::Vec3 p = vector3(v, first) * millimetresPer(unit_);
+    if (const auto problem = detail::positionProblem(p)) fail(r.line, r.major + ": " + *problem);
+    return p;
+  }
+
+  /// Values @p first..+2 of @p v as a unit vector; @p what names it in the error.
+  ddf::Vec3 direction(const AptRecord& r, const std::vector<double>& v, std::size_t first,
+                      const char* what) const {
+    const auto unit = detail::unitDirection(vector3(v, first), 1e-9);
+    if (!unit) fail(r.line, r.major + ": zero " + what + " vector");
+    return *unit;
+  }
+
   void motion(const AptRecord& r, bool from) {
     const auto v = numbers(r, detail::splitValues(r.rest));
     if (v.size() != 3 && v.size() != 6) {
       fail(r.line,
            r.major + " needs 3 or 6 values (x,y,z[,i,j,k]), got " + std::to_string(v.size()));
     }
-    const double per = millimetresPer(unit_);
     ClPoint p;
-    p.positionMm = vector3(v, 0) * per;
-    if (v.size() == 6) {
-      const ddf::Vec3 axis = vector3(v, 3);
-      const double norm = axis.norm();
-      if (!(norm > 1e-9)) fail(r.line, r.major + ": zero tool axis vector");
-      p.axis = axis / norm;
-    }
+    p.positionMm = positionMm(r, v, 0);
+    if (v.size() == 6) p.axis = direction(r, v, 3, "tool axis");
     p.sourceLine = r.line;
     const bool rapid = from || rapid_;
     rapid_ = false;
@@ -179,12 +194,14 @@ class AptParser {
     if (!havePoint_) fail(r.line, "CIRCLE without a preceding point to start from");
     const double per = millimetresPer(unit_);
     detail::AptCircle c;
-    c.centreMm = vector3(v, 0) * per;
-    c.axis = vector3(v, 3);
-    if (!(c.axis.norm() > 1e-9)) fail(r.line, "CIRCLE: zero axis vector");
-    c.axis.normalize();
+    c.centreMm = positionMm(r, v, 0);
+    c.axis = direction(r, v, 3, "axis");
     c.radiusMm = v[6] * per;
     if (!(c.radiusMm > 0.0)) fail(r.line, "CIRCLE: radius must be > 0");
+    if (!(c.radiusMm <= kMaxArcRadiusMm)) {
+      fail(r.line, "CIRCLE: radius " + std::to_string(c.radiusMm) +
+                       " mm is beyond 1e6 mm; not a machine arc");
+    }
     // Radius check tolerance: 1e-3 of the radius, at least 1e-3 of the file unit, which
     // covers files that round every value to 4 decimals.
     c.radiusToleranceMm = 1e-3 * std::max(v[6], 1.0) * per;
@@ -196,9 +213,10 @@ class AptParser {
     std::vector<ddf::Vec3> points;
     std::string problem;
     if (!detail::interpolateAptArc(*circle_, last_, end.positionMm, params_.chordToleranceMm,
-                                   points, problem)) {
+                                   kMaxArcPoints - arcPoints_, points, problem)) {
       fail(circle_->line, "CIRCLE: " + problem);
     }
+    arcPoints_ += points.size();
     for (const ddf::Vec3& q : points) {
       ClPoint p = end;
       p.positionMm = q;
@@ -258,6 +276,7 @@ class AptParser {
           {r.line, "FEDRAT per revolution converted with the spindle speed (" +
                        std::to_string(program_.spindleRpm) + " rpm)"});
     }
+    if (const auto problem = detail::feedProblem(perMin)) fail(r.line, "FEDRAT: " + *problem);
     feedMmPerMin_ = perMin;
   }
 
@@ -282,6 +301,7 @@ class AptParser {
   bool havePoint_ = false;
   ddf::Vec3 last_ = ddf::Vec3::Zero();
   std::optional<detail::AptCircle> circle_;
+  std::size_t arcPoints_ = 0;  // points interpolated for CIRCLE records so far
   std::set<std::string> unknownWords_;
 };
 

@@ -2,9 +2,23 @@
 // ddfcam: APT tool and machine records (LOADTL, CUTTER, TLDATA, SPINDL, COOLNT, MSYS).
 #include "apt_tool_records.h"
 
+#include "path_file_limits.h"
+
 #include <cmath>
 
 namespace ddfcam::io::detail {
+namespace {
+
+/// A cutter length @p value in the file's unit as mm; fails if the conversion overflows.
+double toolLengthMm(const AptLexer& lexer, const AptRecord& r, double value, double per) {
+  const double mm = value * per;
+  if (!(std::abs(mm) <= kMaxCoordinateMm)) {
+    lexer.fail(r.line, r.major + ": length " + std::to_string(value) + " is beyond 1e12 mm");
+  }
+  return mm;
+}
+
+}  // namespace
 
 void readLoadTool(const AptLexer& lexer, const AptRecord& r, ClProgram& program) {
   const auto values = splitValues(r.rest);
@@ -19,14 +33,15 @@ void readLoadTool(const AptLexer& lexer, const AptRecord& r, ClProgram& program)
 void readCutter(const AptLexer& lexer, const AptRecord& r, double per, ClProgram& program) {
   const auto v = aptNumbers(lexer, r, splitValues(r.rest));
   if (v.empty() || v.size() > 7) lexer.fail(r.line, "CUTTER needs 1 to 7 values");
+  const auto mm = [&](std::size_t k) { return toolLengthMm(lexer, r, v[k], per); };
   ClCutter c;
-  c.diameterMm = v[0] * per;
-  if (v.size() >= 2) c.cornerRadiusMm = v[1] * per;
-  c.eMm = v.size() >= 3 ? v[2] * per : c.diameterMm / 2.0 - c.cornerRadiusMm;
-  c.fMm = v.size() >= 4 ? v[3] * per : c.cornerRadiusMm;
+  c.diameterMm = mm(0);
+  if (v.size() >= 2) c.cornerRadiusMm = mm(1);
+  c.eMm = v.size() >= 3 ? mm(2) : c.diameterMm / 2.0 - c.cornerRadiusMm;
+  c.fMm = v.size() >= 4 ? mm(3) : c.cornerRadiusMm;
   if (v.size() >= 5) c.alphaDeg = v[4];
   if (v.size() >= 6) c.betaDeg = v[5];
-  if (v.size() >= 7) c.heightMm = v[6] * per;
+  if (v.size() >= 7) c.heightMm = mm(6);
   program.cutter = c;
 }
 
@@ -40,12 +55,13 @@ void readToolData(const AptLexer& lexer, const AptRecord& r, double per, ClProgr
   }
   const auto v =
       aptNumbers(lexer, r, std::vector<std::string_view>(values.begin() + 1, values.end()));
+  const auto mm = [&](std::size_t k) { return toolLengthMm(lexer, r, v[k], per); };
   ClCutter c;
-  c.diameterMm = v[0] * per;
-  c.cornerRadiusMm = v[1] * per;
+  c.diameterMm = mm(0);
+  c.cornerRadiusMm = mm(1);
   c.eMm = c.diameterMm / 2.0 - c.cornerRadiusMm;
   c.fMm = c.cornerRadiusMm;
-  if (v.size() >= 3) c.heightMm = v[2] * per;
+  if (v.size() >= 3) c.heightMm = mm(2);
   if (v.size() >= 4) c.betaDeg = v[3];
   if (v.size() >= 5) c.alphaDeg = v[4];
   program.cutter = c;

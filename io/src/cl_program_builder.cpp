@@ -4,6 +4,7 @@
 #include <ddfcam/io/cl_program_builder.h>
 
 #include <ddfcam/ddf/surface_locator.h>
+#include <ddfcam/io/apt_writer.h>
 #include <ddfcam/error.h>
 #include <ddfcam/planning/path_regions.h>
 #include <ddfcam/planning/path_sampling.h>
@@ -153,15 +154,11 @@ ddf::Vec3 spindleAxisInToolFrame(ToolKind kind) {
 }
 
 std::optional<ClCutter> clCutterOf(const planning::Tool& tool) {
-  const double r = tool.radiusMm;
   switch (tool.kind) {
     case ToolKind::BallEnd:
-      return ClCutter{2 * r, r, 0.0, r, 0.0, 0.0, tool.widthMm};
     case ToolKind::FlatEnd:
-      return ClCutter{2 * r, 0.0, r, 0.0, 0.0, 0.0, tool.widthMm};
     case ToolKind::TorusCutter:
-      return ClCutter{2 * r, tool.edgeRadiusMm, r - tool.edgeRadiusMm, tool.edgeRadiusMm, 0.0,
-                      0.0,   tool.widthMm};
+      return aptCutter(tool);
     default:
       return std::nullopt;
   }

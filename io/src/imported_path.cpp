@@ -18,13 +18,17 @@
 #include <string>
 #include <tuple>
 
+#include "imported_path_contacts.h"
+
 namespace ddfcam::io {
 namespace {
 
 using ddf::Vec3;
+using detail::contactOf;
+using detail::coreSamples;
+using detail::PartSurface;
+using detail::PoseContact;
 using planning::ToolKind;
-
-constexpr int kRimSamples = 16;
 
 bool isWheel(ToolKind kind) {
   return kind == ToolKind::CylinderRoll || kind == ToolKind::BeltContactWheel;
@@ -148,71 +152,6 @@ std::vector<PlacedPoint> keptPoints(const ClProgram& program, const PlaceProgram
   return out;
 }
 
-/// The part's surface as its raster mesh, for nearest-point queries with the tool side known.
-class PartSurface {
- public:
-  explicit PartSurface(const ddf::DisplacementField& part)
-      : part_(part), raster_(ddf::extractRasterMesh(part)), distance_(raster_.mesh) {
-    const int m = part.resolution();
-    perFace_ = (m - 1) * (m - 1);
-    const ddf::TriangleMesh support = ddf::extractSupportMesh(part);
-    outward_.resize(static_cast<std::size_t>(part.faceCount()));
-    for (int f = 0; f < part.faceCount(); ++f) {
-      const auto& t = support.triangles[static_cast<std::size_t>(f)];
-      const Vec3 a = support.vertices[t[0]], b = support.vertices[t[1]], c = support.vertices[t[2]];
-      const Vec3 v = part.vector(t[0]) + part.vector(t[1]) + part.vector(t[2]);
-      outward_[static_cast<std::size_t>(f)] = (b - a).cross(c - a).dot(v) >= 0 ? 1.0 : -1.0;
-    }
-  }
-
-  struct Hit {
-    Vec3 point;
-    double signedDistance;  // + on the side the vectors point to
-    int face;
-  };
-
-  Hit nearest(const Vec3& p) const {
-    const auto c = distance_.closestPoint(p);
-    if (!c) throw InvalidInput("placing a program: a tool position is not finite");
-    const int face = c->triangle / perFace_;
-    return {c->point, outward_[static_cast<std::size_t>(face)] * c->signedDistance, face};
-  }
-
-  /// Unit normal at @p hit towards the tool side.
-  Vec3 normal(const Hit& hit) const {
-    if (const auto loc = ddf::locateOnFace(part_, hit.face, hit.point))
-      return planning::smoothSurfaceNormal(part_, *loc);
-    const Vec3 v = part_.vectorAt(hit.face, Vec3::Constant(1.0 / 3.0));
-    return v.normalized();
-  }
-
-  /// The foot of @p c on the smooth surface (c - foot along the smooth normal there), from
-  /// @p hit, the nearest point of the faceted raster mesh: the facets' normals jump, which
-  /// shifts the nearest point of a distant c sideways by up to |c - hit| times the jump.
-  /// Fixed-point steps: project c onto the tangent plane at the foot and find the mesh there.
-  std::pair<Hit, Vec3> smoothFoot(const Vec3& c, Hit hit) const {
-    Vec3 n = normal(hit);
-    for (int step = 0; step < 4; ++step) {
-      const Vec3 q = c - (c - hit.point).dot(n) * n;
-      const Hit next = nearest(q);
-      const double moved = (next.point - hit.point).norm();
-      hit = next;
-      n = normal(hit);
-      if (moved < 1e-9) break;
-    }
-    // The length, not the normal component: a tool beside the part's border is far from it.
-    hit.signedDistance = std::copysign((c - hit.point).norm(), (c - hit.point).dot(n));
-    return {hit, n};
-  }
-
- private:
-  const ddf::DisplacementField& part_;
-  ddf::RasterMesh raster_;
-  planning::MeshDistance distance_;
-  int perFace_ = 1;
-  std::vector<double> outward_;
-};
-
 /// Unit tangential part of @p feed at normal @p n, or a stable fallback.
 Vec3 tangentialFeed(const Vec3& feed, const Vec3& n, const Vec3& hint) {
   for (const Vec3& d : {feed, hint}) {
@@ -327,55 +266,6 @@ std::vector<Eigen::Matrix3d> frames(ToolKind kind, const std::vector<Reference>&
     previous = a;
   }
   return out;
-}
-
-/// Core samples of the tool in its own frame with their reach (see placeProgram()).
-std::vector<std::pair<Vec3, double>> coreSamples(const planning::Tool& tool) {
-  const double r = tool.radiusMm;
-  switch (tool.kind) {
-    case ToolKind::BallEnd:
-      return {{Vec3(0, 0, r), r}};
-    case ToolKind::FlatEnd:
-    case ToolKind::TorusCutter: {
-      const bool torus = tool.kind == ToolKind::TorusCutter;
-      const double e = torus ? tool.edgeRadiusMm : 0.0;
-      std::vector<std::pair<Vec3, double>> out{{Vec3::Zero(), 0.0}};
-      for (int i = 0; i < kRimSamples; ++i) {
-        const double phi = 2 * std::numbers::pi * i / kRimSamples;
-        out.push_back({Vec3((r - e) * std::cos(phi), (r - e) * std::sin(phi), e), e});
-      }
-      return out;
-    }
-    default:
-      return {{Vec3::Zero(), r}};
-  }
-}
-
-struct PoseContact {
-  Vec3 point;
-  Vec3 normal;
-  double distanceMm;
-};
-
-/// The contact of a pose: the core sample nearest to the raster mesh (minus its reach), its
-/// foot refined on the smooth surface.
-PoseContact contactOf(const PartSurface& surface, const Eigen::Isometry3d& pose,
-                      const std::vector<std::pair<Vec3, double>>& samples) {
-  PartSurface::Hit best{};
-  Vec3 core = Vec3::Zero();
-  double bestGap = std::numeric_limits<double>::infinity(), reach = 0.0;
-  for (const auto& [local, sampleReach] : samples) {
-    const Vec3 c = pose * local;
-    const PartSurface::Hit hit = surface.nearest(c);
-    if (hit.signedDistance - sampleReach < bestGap - 1e-9) {
-      best = hit;
-      core = c;
-      reach = sampleReach;
-      bestGap = hit.signedDistance - sampleReach;
-    }
-  }
-  const auto [foot, n] = surface.smoothFoot(core, best);
-  return {foot.point, n, foot.signedDistance - reach};
 }
 
 /// Off-part warning and feed of a placed program.

@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "file_access.h"
+#include "path_file_limits.h"
 #include "yaml_subset.h"
 
 namespace ddfcam::io {
@@ -81,6 +82,17 @@ class PoseReader {
     return result;
   }
 
+  /// Coordinate @p key ("x", "y" or "z") of @p position (metres) in mm, checked after the
+  /// conversion; errors name the coordinate's line.
+  double millimetres(const YamlNode& position, std::string_view key) const {
+    const double mm = number(position, key, "a position") * millimetresPer(LengthUnit::Metre);
+    ddf::Vec3 alone = ddf::Vec3::Zero();  // the message names the coordinate by its slot
+    alone[key[0] - 'x'] = mm;
+    if (const auto problem = detail::positionProblem(alone))
+      fail(require(position, key, "a position").line, *problem);
+    return mm;
+  }
+
   void readEntry(const YamlNode& entry) {
     for (const YamlNode& path : requireSequence(entry, "paths", "a toolpath entry").items)
       readPath(path);
@@ -114,24 +126,31 @@ class PoseReader {
     ClPoint point;
     point.path = pathIndex_;
     point.point = index;
-    point.positionMm =
-        ddf::Vec3(number(position, "x", "a position"), number(position, "y", "a position"),
-                  number(position, "z", "a position")) *
-        millimetresPer(LengthUnit::Metre);
-    Eigen::Quaterniond q(
-        number(orientation, "w", "an orientation"), number(orientation, "x", "an orientation"),
-        number(orientation, "y", "an orientation"), number(orientation, "z", "an orientation"));
-    const double norm = q.norm();
-    if (!(norm > 1e-9) || !std::isfinite(norm))
-      fail(orientation.line, "zero quaternion: the tool axis is undefined");
-    if (std::abs(norm - 1.0) > 1e-3)
-      program_.warnings.push_back(
-          {orientation.line, "quaternion of length " + std::to_string(norm) + " normalised"});
-    q.coeffs() /= norm;
-    point.axis = (q * ddf::Vec3::UnitZ()).normalized();
+    point.positionMm = ddf::Vec3(millimetres(position, "x"), millimetres(position, "y"),
+                                 millimetres(position, "z"));
+    point.axis = toolAxis(orientation);
     point.move = planning::MoveKind::Cut;
     point.sourceLine = pose.line;
     program_.points.push_back(std::move(point));
+  }
+
+  /// The tool axis (+z of the pose) of the quaternion @p orientation, normalised without
+  /// overflow: the coefficients are scaled by the largest one first.
+  ddf::Vec3 toolAxis(const YamlNode& orientation) {
+    const auto coefficient = [&](std::string_view key) {
+      return number(orientation, key, "an orientation");
+    };
+    Eigen::Vector4d c(coefficient("x"), coefficient("y"), coefficient("z"), coefficient("w"));
+    const double largest = c.cwiseAbs().maxCoeff();
+    const double norm = largest > 0.0 ? largest * (c / largest).norm() : 0.0;
+    if (!(norm > 1e-9)) fail(orientation.line, "zero quaternion: the tool axis is undefined");
+    if (std::abs(norm - 1.0) > 1e-3)
+      program_.warnings.push_back(
+          {orientation.line, "quaternion of length " + std::to_string(norm) + " normalised"});
+    c /= largest;
+    c.normalize();
+    const Eigen::Quaterniond q(c[3], c[0], c[1], c[2]);
+    return (q * ddf::Vec3::UnitZ()).normalized();
   }
 
   const std::string& name_;

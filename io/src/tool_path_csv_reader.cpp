@@ -6,6 +6,7 @@
 #include <ddfcam/error.h>
 
 #include "file_access.h"
+#include "path_file_limits.h"
 #include "tool_path_csv_columns.h"
 
 #include <algorithm>
@@ -117,6 +118,7 @@ class RowReader {
     pointIndex_.reset();
     for (std::size_t c = 0; c < fields_.size(); ++c) readField(c, point);
     point.positionMm = positionScale_ * ddf::Vec3(values_[0], values_[1], values_[2]);
+    if (const auto problem = detail::positionProblem(point.positionMm)) fail(*problem);
     if (hasAxis_) point.axis = vector(3, "axis");
     if (hasNormal_) point.normal = vector(6, "normal");
     point.path = pathIndex(path_.value_or(0));
@@ -153,6 +155,13 @@ class RowReader {
     return static_cast<long long>(value);
   }
 
+  /// Field @p c as a feed in mm/min, checked after the unit conversion.
+  double feed(std::size_t c) const {
+    const double mmPerMin = real(c) * feedScale_;
+    if (const auto problem = detail::feedProblem(mmPerMin)) fail(fieldName(c) + ": " + *problem);
+    return mmPerMin;
+  }
+
   planning::MoveKind move(std::size_t c) const {
     std::string word(unquoted(fields_[c]));
     for (char& ch : word)
@@ -176,7 +185,7 @@ class RowReader {
         pointIndex_ = integer(c);
         return;
       case CsvColumn::Feed:
-        point.feedMmPerMin = empty ? 0.0 : real(c) * feedScale_;
+        point.feedMmPerMin = empty ? 0.0 : feed(c);
         return;
       case CsvColumn::Move:
         point.move = move(c);
@@ -198,10 +207,9 @@ class RowReader {
     if (given < 3)
       fail(std::string("the ") + what + " has " + std::to_string(given) + " of 3 values");
     const ddf::Vec3 v(values_[slot], values_[slot + 1], values_[slot + 2]);
-    const double length = v.norm();
-    if (!(length > 1e-12) || !std::isfinite(length))
-      fail(std::string("the ") + what + " vector is zero");
-    return ddf::Vec3(v / length);
+    const auto unit = detail::unitDirection(v, 1e-12);
+    if (!unit) fail(std::string("the ") + what + " vector is zero");
+    return *unit;
   }
 
   /// 0-based consecutive index of path number @p value, in order of first appearance.

@@ -8,11 +8,13 @@
 #include <ddfcam/gui/panels/error_map_panel.h>
 #include <ddfcam/gui/panels/segmentation_panel.h>
 #include <ddfcam/gui/panels/simulation_panel.h>
+#include <ddfcam/gui/panels/spacing_refinement_panel.h>
 #include <ddfcam/gui/panels/streamlines_panel.h>
 #include <ddfcam/io/ddf_file.h>
 #include <ddfcam/io/project_file.h>
 #include <ddfcam/io/project_loader.h>
 
+#include <QImage>
 #include <QtTest/QtTest>
 
 #include <sys/wait.h>
@@ -40,6 +42,31 @@ constexpr const char* kJob = R"({
   "report": "report.json"
 })";
 
+/// Spacing refinement as the Spacing refinement panel runs it: the whole part, a field along x
+/// computed without smoothing (the panel never smooths), the default roll, tolerance 0.05 mm;
+/// then the same stock allowance and simulation as above.
+constexpr const char* kRefinedJob = R"({
+  "part": "part.ddf",
+  "regions": [{"region": "all", "field": "fixed", "direction": [1, 0, 0], "smooth": false,
+               "lines": "refined", "toleranceMm": 0.05, "maxIterations": 20}],
+  "simulation": {"allowanceMm": 0.02, "mode": "discrete"},
+  "project": "job.ddfproj",
+  "report": "report.json"
+})";
+
+/// A coarse job with an error map and a screenshot rendered by the workbench.
+constexpr const char* kScreenshotJob = R"({
+  "part": "part.ddf",
+  "tools": [{"name": "ball end", "kind": "ball_end", "radiusMm": 5, "widthMm": 10}],
+  "regions": [{"field": "fixed", "direction": [0, 1, 0], "smooth": false, "spacingMm": 3}],
+  "placement": {"samplingToleranceMm": 0.01, "samplingStepMm": 2},
+  "simulation": {"allowanceMm": 0.02, "mode": "swept"},
+  "errorMap": {"lowerMm": -0.01, "upperMm": 0.01},
+  "project": "job.ddfproj",
+  "report": "report.json",
+  "screenshots": ["view.png"]
+})";
+
 /// Largest difference of two height lists (infinity on a size mismatch or NaN in only one).
 double maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
   if (a.size() != b.size()) return std::numeric_limits<double>::infinity();
@@ -59,6 +86,8 @@ class BatchJobGuiTest : public ddfcam::test::WorkbenchTest {
  private slots:
   void initTestCase() { QVERIFY(openWorkbench(false)); }
   void jobReproducesTheWorkbench();
+  void refinedJobReproducesTheSpacingRefinementPanel();
+  void screenshotShowsTheErrorMap();
 
  private:
   template <typename T>
@@ -66,13 +95,14 @@ class BatchJobGuiTest : public ddfcam::test::WorkbenchTest {
     return f_.window->findChild<T*>();
   }
   /// Runs ddfcam-cli on the job in @p dir and reads the project it saved.
-  ddfcam::planning::Project runBatch(const std::filesystem::path& dir);
+  ddfcam::planning::Project runBatch(const std::filesystem::path& dir, const char* job = kJob);
   /// The job's steps through the panels, on the document.
   void runPanels(const std::filesystem::path& part);
 };
 
-ddfcam::planning::Project BatchJobGuiTest::runBatch(const std::filesystem::path& dir) {
-  std::ofstream(dir / "job.json") << kJob;
+ddfcam::planning::Project BatchJobGuiTest::runBatch(const std::filesystem::path& dir,
+                                                    const char* job) {
+  std::ofstream(dir / "job.json") << job;
   const std::string command = std::string("'") + DDFCAM_CLI_PATH + "' run '" +
                               (dir / "job.json").string() + "' > '" + (dir / "log.txt").string() +
                               "' 2>&1";
@@ -166,6 +196,94 @@ void BatchJobGuiTest::jobReproducesTheWorkbench() {
   };
   QVERIFY(!deviation(batch).empty());
   QVERIFY(maxDifference(deviation(gui), deviation(batch)) <= 1e-9);
+}
+
+void BatchJobGuiTest::refinedJobReproducesTheSpacingRefinementPanel() {
+  QTemporaryDir tmp;
+  QVERIFY(tmp.isValid());
+  const std::filesystem::path dir = tmp.path().toStdString();
+  ddfcam::io::writeDdf(
+      ddfcam::ddf::planePatch({.size = {2.0, 20.0}, .cellsX = 1, .cellsY = 10, .m = 9}).ddf,
+      dir / "part.ddf");
+  const ddfcam::planning::Project batch = runBatch(dir, kRefinedJob);
+  QVERIFY(batch.part.has_value());
+
+  ddfcam::planning::Project loaded = ddfcam::io::openProject(dir / "part.ddf");
+  loaded.tools = {ddfcam::planning::Tool{}};  // the job's default tool
+  load(std::move(loaded));
+  auto* refinement = panel<ddfcam::gui::SpacingRefinementPanel>();
+  QVERIFY(refinement != nullptr);
+  refinement->setRegion(-1);
+  refinement->setTool(0);
+  refinement->setFieldSource(ddfcam::planning::FlowFieldSource::FixedDirection);
+  refinement->setTolerance(0.05);
+  refinement->setMaxIterations(20);
+  QVERIFY(refinement->refine());
+  waitOk();
+  QVERIFY(refinement->result() != nullptr);
+  QVERIFY(refinement->apply());
+  auto* simulation = panel<ddfcam::gui::SimulationPanel>();
+  QVERIFY(simulation != nullptr);
+  QVERIFY(simulation->raiseByAllowance(0.02));
+  waitOk();
+  QVERIFY(simulation->simulatePath(0));
+  waitOk();
+  const ddfcam::planning::Project& gui = project();
+
+  QCOMPARE(gui.paths.size(), std::size_t{1});
+  QCOMPARE(batch.paths.size(), std::size_t{1});
+  const auto& a = gui.paths[0];
+  const auto& b = batch.paths[0];
+  QCOMPARE(QString::fromStdString(a.name), QString::fromStdString(b.name));
+  QVERIFY(a.passStarts == b.passStarts);
+  QCOMPARE(a.poses.size(), b.poses.size());
+  double poseDiff = 0.0;
+  for (std::size_t i = 0; i < a.poses.size(); ++i)
+    poseDiff = std::max(poseDiff, (a.poses[i].pose.matrix() - b.poses[i].pose.matrix()).norm());
+  qInfo("refined: %zu passes, %zu poses; largest pose difference %.3g", a.passStarts.size(),
+        a.poses.size(), poseDiff);
+  QVERIFY(poseDiff <= 1e-9);
+  QCOMPARE(gui.states.size(), batch.states.size());
+  for (std::size_t s = 0; s < gui.states.size(); ++s)
+    QVERIFY2(maxDifference(gui.states[s].heights, batch.states[s].heights) <= 1e-9,
+             gui.states[s].name.c_str());
+  QVERIFY(maxDifference(gui.part->allHeights(), batch.part->allHeights()) <= 1e-9);
+  const auto error = [](const ddfcam::planning::Project& p) {
+    for (const auto& f : p.fields)
+      if (f.name == "refinement error") return f.values;
+    return std::vector<float>{};
+  };
+  QVERIFY(!error(batch).empty());
+  QVERIFY(maxDifference(error(gui), error(batch)) <= 1e-9);
+}
+
+void BatchJobGuiTest::screenshotShowsTheErrorMap() {
+  QTemporaryDir tmp;
+  QVERIFY(tmp.isValid());
+  const std::filesystem::path dir = tmp.path().toStdString();
+  ddfcam::io::writeDdf(ddfcam::ddf::demoPart({.cellsX = 8, .cellsY = 6, .m = 9}).ddf,
+                       dir / "part.ddf");
+  QVERIFY(qEnvironmentVariableIsSet("DISPLAY"));  // ddfcam-cli renders only with a display
+  const ddfcam::planning::Project batch = runBatch(dir, kScreenshotJob);
+  QVERIFY(batch.part.has_value());
+  const QImage image(QString::fromStdString((dir / "view.png").string()));
+  QVERIFY2(!image.isNull(), "the job wrote no readable view.png");
+  // The tolerance-band colours (material left: blues, in tolerance: green) cover the part;
+  // the plain brass surface (the picture before the field was shown) has neither. The
+  // scalar bar alone is below 1 % of the window.
+  std::size_t band = 0, green = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const QColor c = image.pixelColor(x, y);
+      const bool blue = c.blue() > c.red() + 50 && c.blue() > c.green() + 20;
+      const bool isGreen = c.green() > c.red() + 50 && c.green() > c.blue() + 40;
+      band += blue || isGreen ? 1 : 0;
+      green += isGreen ? 1 : 0;
+    }
+  const double percent = 100.0 * band / (image.width() * image.height());
+  qInfo("screenshot %dx%d: %.1f %% band colours (%zu green pixels)", image.width(), image.height(),
+        percent, green);
+  QVERIFY2(percent > 5.0, qPrintable(QString::number(percent)));
 }
 
 QTEST_MAIN(BatchJobGuiTest)

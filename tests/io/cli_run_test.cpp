@@ -6,6 +6,7 @@
 #include <ddfcam/io/project_file.h>
 #include <ddfcam/io/tool_library_file.h>
 #include <ddfcam/io/tool_path_csv.h>
+#include <ddfcam/planning/scallop_spacing.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 
 #include "io_test_support.h"
@@ -217,6 +219,53 @@ TEST(CliRun, TransverseFamilyWithALibraryTool) {
   EXPECT_GE(project.paths[0].passStarts.size(), 5u);
   EXPECT_LE(project.paths[0].passStarts.size(), 7u);
   EXPECT_EQ(project.regions[0].plan.tool, 1);
+}
+
+/// Plane z = 0.25 over x in [0, 2] (feed), y in [0, 20] (cross-feed): the part of the iso-scallop
+/// oracle of tests/planning/spacing_refinement_test.cpp.
+ddf::GeneratedSurface refinementPlane() {
+  return ddf::planePatch({.size = {2.0, 20.0}, .cellsX = 1, .cellsY = 10, .m = 13});
+}
+
+TEST(CliRun, RefinedLinesMeetTheToleranceWithTheIsoScallopCount) {
+  test::ScratchDir dir;
+  const ddf::GeneratedSurface plane = refinementPlane();
+  writeDdf(plane.ddf, dir / "plane.ddf");
+  // The simulation starts from the stock refineSpacing assumes (2.5 x tolerance) and cuts
+  // pose by pose like it, so the ground part must meet the refinement's tolerance.
+  writeText(dir / "job.json", R"({
+  "part": "plane.ddf",
+  "tools": [{"name": "ball R5", "kind": "sphere", "radiusMm": 5, "segments": 96}],
+  "regions": [{"field": "fixed", "direction": [1, 0, 0], "smooth": false, "lines": "refined",
+               "toleranceMm": 0.05}],
+  "simulation": {"allowanceMm": 0.125, "mode": "discrete"},
+  "errorMap": {"lowerMm": -0.05, "upperMm": 0.05}
+})");
+  const RunResult run = cli(dir, {"run", (dir / "job.json").string()});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const planning::Project project = readProject(dir / "job.ddfproj");
+  ASSERT_EQ(project.paths.size(), 1u);
+  EXPECT_EQ(project.paths[0].name, "refined spacing");
+  // Iso-scallop oracle: 20 mm across at the ball's analytic spacing on a plane.
+  const double spacing = *planning::scallopSpacingMm(5.0, 0.0, 0.05);
+  const int analytic = static_cast<int>(std::ceil(20.0 / spacing));
+  const int passes = static_cast<int>(project.paths[0].passStarts.size());
+  EXPECT_LE(std::abs(passes - analytic), 0.1 * analytic) << passes << " passes, " << analytic;
+  // Material left measured from the saved heights against the exact plane.
+  const ddf::DisplacementField& ground = *project.part;
+  double worst = -1e9;
+  for (int f = 0; f < ground.faceCount(); ++f)
+    for (int k = 0; k < ground.resolution(); ++k)
+      for (int i = 0; i + k < ground.resolution(); ++i)
+        worst = std::max(worst, plane.surface->value(ground.surfacePoint(f, i, k)));
+  EXPECT_GT(worst, 0.0) << "scallops stay between the passes";
+  EXPECT_LE(worst, 0.05 + 1e-4);
+  const auto field = std::ranges::find(project.fields, std::string("refinement error"),
+                                       &planning::ScalarField::name);
+  ASSERT_NE(field, project.fields.end());
+  const nlohmann::json report = nlohmann::json::parse(test::readBytes(dir / "report.json"));
+  EXPECT_LE(report["error_map"]["max_mm"].get<double>(), 0.05 + 1e-4);
+  EXPECT_EQ(report["paths"][0]["lines"].get<int>(), passes);
 }
 
 /// Runs @p job and expects a failure (exit 1) whose message holds every one of @p words.

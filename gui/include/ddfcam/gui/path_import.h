@@ -69,11 +69,6 @@ bool isPathFile(const QString& file);
 /// translation (mm).
 Eigen::Isometry3d importTransform(const PathImportOptions& options);
 
-/// @brief The planning tool for an APT @p cutter (mm): a ball-end when the corner radius is
-/// the radius, a flat-end when it is 0, else a torus cutter; flute length h (2 d if h is 0).
-/// @throws InvalidInput if the cutter gives no usable tool (diameter <= 0, corner > radius).
-planning::Tool toolFromCutter(const io::ClCutter& cutter, const std::string& name);
-
 /// @brief The options the dialog starts with for @p request: the file's unit, the program's
 /// cutter as a new tool when the project has no tools, else tool 0, the file's base name.
 PathImportOptions initialImportOptions(const PathImportRequest& request);

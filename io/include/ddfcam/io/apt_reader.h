@@ -32,7 +32,10 @@ struct AptReadParams {
 /// @param sourceName file name used in messages.
 /// @throws IoError "<name>: line N: <what>" for truncated records, non-numbers, wrong value
 /// counts, zero axis vectors, a CIRCLE not followed by a GOTO or with an inconsistent radius,
-/// binary input, or more than 50 M points; InvalidInput for a bad chord tolerance.
+/// binary input, or more than 50 M points; positions beyond +-1e12 mm or feeds beyond 1e12
+/// mm/min after the unit conversion, negative feeds, a CIRCLE of radius > 1e6 mm, an arc needing
+/// more than 1e6 chords or arcs adding more than 1e6 points to one program (use a coarser
+/// chord tolerance); InvalidInput for a bad chord tolerance.
 ClProgram decodeApt(std::string_view text, const std::string& sourceName,
                     const AptReadParams& params = {});
 

@@ -32,7 +32,8 @@ namespace ddfcam::io {
 /// @param sourceName file name used in messages.
 /// @throws IoError "<sourceName>: line N: <what>" when /PROG is missing, an instruction is
 /// malformed or never ends with ';', a P[n] used by /MN has no /POS entry or only joint
-/// angles, a /POS entry is malformed, duplicated or lacks one of X Y Z W P R; and
+/// angles, a /POS entry is malformed, duplicated or lacks one of X Y Z W P R, a coordinate is
+/// beyond +-1e12 mm or a speed beyond 1e12 mm/min after conversion; and
 /// "<sourceName>: ..." when there is no /MN section or no motion at all.
 ClProgram decodeFanucLs(std::string_view text, const std::string& sourceName);
 

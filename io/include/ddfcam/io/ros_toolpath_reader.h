@@ -30,7 +30,8 @@ namespace ddfcam::io {
 /// YAML nodes (about 200 k poses).
 /// @param sourceName file name used in messages.
 /// @throws IoError "<sourceName>: line N: <what>" for YAML outside the subset, a missing
-/// `paths`/`poses`/`position`/`orientation` or coordinate, a non-number, a zero quaternion,
+/// `paths`/`poses`/`position`/`orientation` or coordinate, a non-number, a zero quaternion, a
+/// coordinate beyond +-1e12 mm after the conversion from metres,
 /// and "<sourceName>: ..." for a document without any pose.
 ClProgram decodeRosToolpathYaml(std::string_view text, const std::string& sourceName);
 
