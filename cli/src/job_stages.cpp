@@ -10,6 +10,7 @@
 #include <ddfcam/planning/evenly_spaced_streamlines.h>
 #include <ddfcam/planning/flow_field.h>
 #include <ddfcam/planning/line_field.h>
+#include <ddfcam/planning/line_ordering.h>
 #include <ddfcam/planning/path_linking.h>
 #include <ddfcam/planning/region_editing.h>
 #include <ddfcam/planning/segmentation.h>
@@ -103,42 +104,6 @@ std::vector<planning::Streamline> traceLines(const ddf::DisplacementField& part,
   return lines;
 }
 
-/// @p line without repeated points and fold-backs (A B A), as the Streamlines panel keeps it.
-void dropRepeatedPoints(planning::Streamline& line) {
-  constexpr double kEpsMm = 1e-6;
-  std::vector<ddf::SurfaceLocation> kept;
-  for (const ddf::SurfaceLocation& q : line.points) {
-    if (!kept.empty() && (q.point - kept.back().point).norm() <= kEpsMm) continue;
-    if (kept.size() >= 2 && (q.point - kept[kept.size() - 2].point).norm() <= kEpsMm) {
-      kept.pop_back();
-      continue;
-    }
-    kept.push_back(q);
-  }
-  line.points = std::move(kept);
-  line.seedIndex = std::min(line.seedIndex, line.points.empty() ? 0 : line.points.size() - 1);
-}
-
-planning::Streamline reversed(planning::Streamline line) {
-  std::reverse(line.points.begin(), line.points.end());
-  std::swap(line.stop, line.backwardStop);
-  line.seedIndex = line.points.empty() ? 0 : line.points.size() - 1 - line.seedIndex;
-  return line;
-}
-
-/// The lines in machining order and direction (planning::linkStreamlines).
-void linkLines(const ddf::DisplacementField& part, std::vector<planning::Streamline>& lines,
-               planning::LinkingOrder order) {
-  planning::LinkingParams params;
-  params.order = order;
-  const planning::LinkedPaths linked = planning::linkStreamlines(part, lines, params);
-  std::vector<planning::Streamline> ordered;
-  for (const planning::PathMove& move : linked.moves)
-    if (move.kind == planning::MoveKind::Cut)
-      ordered.push_back(move.reversed ? reversed(lines[move.path]) : lines[move.path]);
-  lines = std::move(ordered);
-}
-
 RegionPathInfo refinedPath(planning::Project& project, const planning::LineField& field,
                            const std::vector<std::uint8_t>& mask, const RegionJob& job) {
   planning::SpacingRefinementParams params;
@@ -220,10 +185,10 @@ RegionPathInfo planRegion(planning::Project& project, const planning::CurvatureF
     info = refinedPath(project, field, mask, job);
   } else {
     std::vector<planning::Streamline> lines = traceLines(part, field, mask, job);
-    for (planning::Streamline& line : lines) dropRepeatedPoints(line);
+    for (planning::Streamline& line : lines) planning::dropRepeatedPoints(line);
     std::erase_if(lines, [](const planning::Streamline& l) { return l.points.size() < 2; });
     if (lines.empty()) throw InvalidInput("no line with two points could be traced");
-    if (job.link && lines.size() > 1) linkLines(part, lines, job.plan.linking);
+    if (job.link && lines.size() > 1) planning::orderLinesForCutting(part, lines, job.plan.linking);
     planning::StreamlinePathParams params = placement;
     const char* kind = job.method == LineMethod::Even ? "coverage" : "streamline family";
     params.name = std::string(kind) + " " + std::to_string(project.paths.size() + 1);

@@ -105,8 +105,8 @@ void placeAndAdd(const QString& file, const io::ClProgram& program,
   if (options.toolIndex < 0) {
     if (!program.cutter) throw InvalidInput("the file has no CUTTER record to make a tool from");
     newTool = io::toolFromCutter(*program.cutter, program.toolName.empty()
-                                                  ? QFileInfo(file).baseName().toStdString()
-                                                  : program.toolName);
+                                                      ? QFileInfo(file).baseName().toStdString()
+                                                      : program.toolName);
   } else if (options.toolIndex >= static_cast<int>(project.tools.size())) {
     throw InvalidInput("the project has no tool " + std::to_string(options.toolIndex + 1));
   }

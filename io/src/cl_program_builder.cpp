@@ -4,8 +4,8 @@
 #include <ddfcam/io/cl_program_builder.h>
 
 #include <ddfcam/ddf/surface_locator.h>
-#include <ddfcam/io/apt_writer.h>
 #include <ddfcam/error.h>
+#include <ddfcam/io/apt_writer.h>
 #include <ddfcam/planning/path_regions.h>
 #include <ddfcam/planning/path_sampling.h>
 

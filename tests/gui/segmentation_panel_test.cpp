@@ -18,6 +18,7 @@
 #include <ddfcam/planning/region_editing.h>
 
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QPolygonF>
@@ -75,6 +76,7 @@ class SegmentationPanelTest : public ddfcam::test::WorkbenchTest {
   void brushStrokePaintsFacesUnderTheMouse();
   void lassoAssignsFacesProjectedInside();
   void planEditsAreUndoable();
+  void showingAFieldHidesTheRegionColours();
 
  private:
   QUndoStack& undo() const { return *f_.window->document().undoStack(); }
@@ -343,4 +345,24 @@ void SegmentationPanelTest::planEditsAreUndoable() {
 }
 
 QTEST_MAIN(SegmentationPanelTest)
+// Region colours are drawn over the surface; a field the user picks must not stay hidden
+// under them, and a new segmentation shows the regions again.
+void SegmentationPanelTest::showingAFieldHidesTheRegionColours() {
+  auto* colours = panel()->findChild<QCheckBox*>("showRegionColours");
+  QVERIFY(colours != nullptr);
+  QVERIFY(colours->isChecked());
+  ddfcam::planning::Project p = project();
+  const std::vector<float> heights = p.part->allHeights();
+  p.fields.push_back({"height", "", true, heights});
+  f_.window->document().reset(std::move(p));
+  f_.window->partView().showField("height");
+  QVERIFY(!colours->isChecked());
+  colours->setChecked(true);  // the user may bring them back over the same field
+  f_.window->partView().setColourMap(ddfcam::gui::ColourMap::Viridis);
+  QVERIFY(colours->isChecked());
+  QVERIFY(panel()->segment());
+  QVERIFY(f_.window->waitForJobs());
+  QVERIFY(colours->isChecked());
+}
+
 #include "segmentation_panel_test.moc"

@@ -110,7 +110,9 @@ TEST(ClProgramBuilder, DerivedNormalsMatchTheAnalyticContactOfEachToolKind) {
 
 /// Two passes along x on the plane z = 0 (3 and 2 poses), a roll R 5 above each contact.
 planning::ToolPath twoRollPasses() {
-  planning::ToolPath path{.name = "two", .feedMmPerMin = 1200};
+  planning::ToolPath path;
+  path.name = "two";
+  path.feedMmPerMin = 1200;
   const std::vector<ddf::Vec3> contacts = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {2, 3, 0}, {0, 3, 0}};
   for (const ddf::Vec3& c : contacts) {
     planning::PathPose pose;
@@ -183,7 +185,9 @@ TEST(ClProgramBuilder, AppendedProgramsContinueThePathNumbering) {
 TEST(ClProgramBuilder, LinkedMovesCarryTypesFeedsAndTheLastCutsOrientation) {
   // Three parallel lines along x on the plane z = 0, 2 mm apart; every link lifts.
   std::vector<std::vector<ddf::Vec3>> lines;
-  planning::ToolPath path{.name = "lines", .feedMmPerMin = 800};
+  planning::ToolPath path;
+  path.name = "lines";
+  path.feedMmPerMin = 800;
   for (int l = 0; l < 3; ++l) {
     lines.emplace_back();
     path.passStarts.push_back(static_cast<int>(path.poses.size()));

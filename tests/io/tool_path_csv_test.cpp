@@ -139,8 +139,12 @@ void expectSameToPrecision(const ClProgram& a, const ClProgram& b, double unitMm
     EXPECT_NEAR(p.feedMmPerMin, q.feedMmPerMin, lengthTolerance) << i;
     ASSERT_EQ(p.axis.has_value(), q.axis.has_value()) << i;
     ASSERT_EQ(p.normal.has_value(), q.normal.has_value()) << i;
-    if (p.axis) EXPECT_LE((*p.axis - *q.axis).norm(), vectorTolerance) << i;
-    if (p.normal) EXPECT_LE((*p.normal - *q.normal).norm(), vectorTolerance) << i;
+    if (p.axis) {
+      EXPECT_LE((*p.axis - *q.axis).norm(), vectorTolerance) << i;
+    }
+    if (p.normal) {
+      EXPECT_LE((*p.normal - *q.normal).norm(), vectorTolerance) << i;
+    }
   }
 }
 
@@ -346,7 +350,9 @@ TEST(ToolPathCsv, GarbageNeverCrashesTheReader) {
       for (const ClPoint& p : program.points) {
         EXPECT_TRUE(p.positionMm.allFinite());
         EXPECT_GE(p.path, 0);
-        if (p.axis) EXPECT_NEAR(p.axis->norm(), 1.0, 1e-9);
+        if (p.axis) {
+          EXPECT_NEAR(p.axis->norm(), 1.0, 1e-9);
+        }
       }
     } catch (const IoError&) {
     }

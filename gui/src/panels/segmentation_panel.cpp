@@ -176,6 +176,12 @@ QWidget* SegmentationPanel::buildRegionGroup() {
   layout->addLayout(buttons);
   layout->addWidget(showColours_);
   connect(showColours_, &QCheckBox::toggled, tool_, &RegionViewTool::setColoursVisible);
+  // Region colours are drawn over the surface: a field the user picks would stay hidden.
+  connect(&workbench().partView, &PartView::fieldDisplayChanged, this, [this] {
+    const std::string& shown = workbench().partView.fieldDisplay().field;
+    if (!shown.empty() && shown != lastShownField_) showColours_->setChecked(false);
+    lastShownField_ = shown;
+  });
   connect(list_, &QTreeWidget::itemSelectionChanged, this, [this] {
     if (!refreshing_) refreshPlan();
   });
@@ -248,6 +254,7 @@ bool SegmentationPanel::segment() {
       Document& document = self->workbench().document;
       document.push(std::make_unique<SetRegionsCommand>(document, title, std::move(*regions)));
       self->status_->setText(tr("%1 regions").arg(document.project().regions.size()));
+      self->showColours_->setChecked(true);
     });
   });
 }

@@ -15,6 +15,7 @@
 #include <ddfcam/gui/path_commands.h>
 #include <ddfcam/gui/path_list.h>
 #include <ddfcam/gui/vtk_view.h>
+#include <ddfcam/planning/line_ordering.h>
 #include <ddfcam/planning/path_linking.h>
 #include <ddfcam/planning/streamline_fairing.h>
 #include <ddfcam/planning/streamline_path.h>
@@ -31,49 +32,6 @@
 #include <optional>
 
 namespace ddfcam::gui {
-
-namespace {
-
-planning::Streamline reversed(planning::Streamline line) {
-  std::reverse(line.points.begin(), line.points.end());
-  std::swap(line.stop, line.backwardStop);
-  line.seedIndex = line.points.empty() ? 0 : line.points.size() - 1 - line.seedIndex;
-  return line;
-}
-
-/// The lines in machining order and direction (planning::linkStreamlines) and the link report.
-planning::LinkedPaths linkLines(const ddf::DisplacementField& part,
-                                std::vector<planning::Streamline>& lines,
-                                planning::LinkingOrder order) {
-  planning::LinkingParams params;
-  params.order = order;
-  planning::LinkedPaths linked = planning::linkStreamlines(part, lines, params);
-  std::vector<planning::Streamline> ordered;
-  for (const planning::PathMove& move : linked.moves)
-    if (move.kind == planning::MoveKind::Cut)
-      ordered.push_back(move.reversed ? reversed(lines[move.path]) : lines[move.path]);
-  lines = std::move(ordered);
-  return linked;
-}
-
-/// @p line without repeated points (a trace that stalls at a boundary) and fold-backs onto
-/// the point before (A B A): they leave no feed direction for a roll's pose.
-void dropRepeatedPoints(planning::Streamline& line) {
-  constexpr double kEpsMm = 1e-6;
-  std::vector<ddf::SurfaceLocation> kept;
-  for (const ddf::SurfaceLocation& q : line.points) {
-    if (!kept.empty() && (q.point - kept.back().point).norm() <= kEpsMm) continue;
-    if (kept.size() >= 2 && (q.point - kept[kept.size() - 2].point).norm() <= kEpsMm) {
-      kept.pop_back();
-      continue;
-    }
-    kept.push_back(q);
-  }
-  line.points = std::move(kept);
-  line.seedIndex = std::min(line.seedIndex, line.points.empty() ? 0 : line.points.size() - 1);
-}
-
-}  // namespace
 
 bool StreamlinesPanel::runWithFields(const QString& title, LineWork work, const QString& pathName,
                                      std::shared_ptr<const QString> note) {
@@ -141,14 +99,14 @@ void StreamlinesPanel::addPath(std::vector<planning::Streamline> lines, const QS
   runUserAction(workbench().reportError, tr("Add %1").arg(name), [&] {
     Document& document = workbench().document;
     const planning::Project& p = document.project();
-    for (planning::Streamline& line : lines) dropRepeatedPoints(line);
+    for (planning::Streamline& line : lines) planning::dropRepeatedPoints(line);
     std::erase_if(lines, [](const planning::Streamline& l) { return l.points.size() < 2; });
     const planning::RegionPlan* plan = selectedPlan();
     QString idle;
     std::optional<double> linkedIdle;
     if (link_->isChecked() && lines.size() > 1) {
       const auto order = plan ? plan->linking : planning::LinkingOrder::ZigZag;
-      const planning::LinkedPaths linked = linkLines(*p.part, lines, order);
+      const planning::LinkedPaths linked = planning::orderLinesForCutting(*p.part, lines, order);
       idle = tr(", linked: idle %1 mm").arg(linked.idleLengthMm, 0, 'f', 1);
       linkedIdle = linked.idleLengthMm;
     }

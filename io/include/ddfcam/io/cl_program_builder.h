@@ -103,10 +103,10 @@ struct ExportSelection {
   bool perRegion = false;
   /// Indices into Project::regions whose paths are exported; empty = all regions and the paths
   /// in no region (default empty).
-  std::vector<int> regions;
+  std::vector<int> regions{};
   /// Indices into Project::paths to export; empty = all (default empty).
-  std::vector<int> paths;
-  ClLinkParams link;  ///< lifts between passes and between paths (default ClLinkParams{})
+  std::vector<int> paths{};
+  ClLinkParams link{};  ///< lifts between passes and between paths (default ClLinkParams{})
 };
 
 /// @brief A program with the name it is exported under (a file suffix, a PARTNO).

@@ -85,8 +85,8 @@ std::vector<std::filesystem::path> writeToolPathCsvFiles(const std::vector<Named
 /// @throws IoError "<sourceName>: line N: <what>" for a wrong field count, a field that is not a
 /// number, a zero, partial or non-finite axis or normal, an unknown move word, a negative path
 /// index, a negative feed, a position beyond +-1e12 mm or a feed beyond 1e12 mm/min after the
-/// unit conversion; or "<sourceName>: ..." for text with no data row recognised as such, binary content,
-/// or more than params.maxRows rows.
+/// unit conversion; or "<sourceName>: ..." for text with no data row recognised as such, binary
+/// content, or more than params.maxRows rows.
 ClProgram decodeToolPathCsv(std::string_view text, const std::string& sourceName,
                             const CsvReadParams& params = {});
 

@@ -25,13 +25,13 @@ struct PathPose {
 
 /// @brief A named tool path: poses in machining order, grouped into passes.
 struct ToolPath {
-  std::string name;              ///< shown in lists and files
-  int tool = 0;                  ///< index into Project::tools (default 0)
-  double feedMmPerMin = 1000.0;  ///< feed rate, mm/min (default 1000)
-  std::vector<PathPose> poses;   ///< #P poses in machining order
+  std::string name;               ///< shown in lists and files
+  int tool = 0;                   ///< index into Project::tools (default 0)
+  double feedMmPerMin = 1000.0;   ///< feed rate, mm/min (default 1000)
+  std::vector<PathPose> poses{};  ///< #P poses in machining order
   /// Index of the first pose of every pass, ascending, first entry 0 when poses exist; the
   /// tool is lifted between passes, so overlays draw each pass as its own polyline.
-  std::vector<int> passStarts;
+  std::vector<int> passStarts{};
 
   bool operator==(const ToolPath&) const = default;
 };

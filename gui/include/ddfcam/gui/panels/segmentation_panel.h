@@ -99,6 +99,7 @@ class SegmentationPanel : public Panel {
   RegionPlanEditor* plan_ = nullptr;
   QLabel* status_ = nullptr;
   bool refreshing_ = false;
+  std::string lastShownField_;  ///< field shown at the last display change
 };
 
 }  // namespace ddfcam::gui
