@@ -186,8 +186,9 @@ bool MainWindow::openDemo() {
 
 bool MainWindow::saveScreenshot(const QString& path, QSize size) {
   return runUserAction(dialogs_.error, tr("Save screenshot"), [&] {
-    if (!view_->saveScreenshot(path, size))
-      throw IoError("cannot write the screenshot to '" + path.toStdString() + "'");
+    const bool saved =
+        size.isValid() ? view_->saveScreenshot(path, size) : view_->saveScreenshot(path);
+    if (!saved) throw IoError("cannot write the screenshot to '" + path.toStdString() + "'");
   });
 }
 

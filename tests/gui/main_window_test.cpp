@@ -239,6 +239,11 @@ void MainWindowTest::saveScreenshotAtChosenSize() {
   const auto stats = frameStats(saved, background());
   QVERIFY(stats.cornersBackground);
   QVERIFY(stats.centreForeground > 0.3);
+  // No size: the view's own size (device pixels), as documented.
+  const QString viewSized = f_.dir.filePath("view.png");
+  QVERIFY(f_.window->saveScreenshot(viewSized));
+  QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
+  QCOMPARE(QImage(viewSized).size(), frame().size());
   // A path that cannot be written is reported, not silently ignored.
   f_.script.screenshot->path = f_.dir.filePath("no/such/folder/shot.png");
   action("actionSaveScreenshot")->trigger();
