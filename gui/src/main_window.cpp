@@ -239,20 +239,26 @@ void MainWindow::createFileMenu() {
       saveScreenshot(request->path, request->size);
   });
   file->addSeparator();
-  add(tr("&Import tool path..."), "actionImportPath", [this] {
+  addPathFileActions(file);
+  file->addSeparator();
+  add(
+      tr("&Quit"), "actionQuit", [this] { close(); }, QKeySequence::Quit);
+}
+
+void MainWindow::addPathFileActions(QMenu* file) {
+  QAction* import = file->addAction(tr("&Import tool path..."), this, [this] {
     const QString path = dialogs_.importPathFile ? dialogs_.importPathFile() : QString();
     if (!path.isEmpty()) importPathFile(path);
   });
+  import->setObjectName("actionImportPath");
   QAction* exportPaths =
-      add(tr("&Export tool paths..."), "actionExportPaths", [this] { exportToolPaths(); });
+      file->addAction(tr("&Export tool paths..."), this, [this] { exportToolPaths(); });
+  exportPaths->setObjectName("actionExportPaths");
   auto enableExport = [this, exportPaths] {
     exportPaths->setEnabled(!document_->project().paths.empty());
   };
   connect(document_.get(), &Document::changed, exportPaths, enableExport);
   enableExport();
-  file->addSeparator();
-  add(
-      tr("&Quit"), "actionQuit", [this] { close(); }, QKeySequence::Quit);
 }
 
 void MainWindow::createEditMenu() {

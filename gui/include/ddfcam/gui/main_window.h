@@ -95,6 +95,8 @@ class MainWindow : public QMainWindow {
   void createServices(const WorkbenchOptions& options);
   void createDocks();
   void createFileMenu();
+  /// Import and export of tool-path files, enabled as the document allows.
+  void addPathFileActions(QMenu* file);
   void createEditMenu();
   void createViewMenu();
   void registerDefaultPanels();
