@@ -98,6 +98,8 @@ class BatchJobGuiTest : public ddfcam::test::WorkbenchTest {
   ddfcam::planning::Project runBatch(const std::filesystem::path& dir, const char* job = kJob);
   /// The job's steps through the panels, on the document.
   void runPanels(const std::filesystem::path& part);
+  void compareResults(const ddfcam::planning::Project& gui, const ddfcam::planning::Project& batch,
+                      const char* field);
 };
 
 ddfcam::planning::Project BatchJobGuiTest::runBatch(const std::filesystem::path& dir,
@@ -149,6 +151,42 @@ void BatchJobGuiTest::runPanels(const std::filesystem::path& part) {
   waitOk();
 }
 
+/// The one path, its poses and contacts, every state, the final heights and field @p field of
+/// the workbench's project @p gui equal those of the job's project @p batch.
+void BatchJobGuiTest::compareResults(const ddfcam::planning::Project& gui,
+                                     const ddfcam::planning::Project& batch, const char* field) {
+  QCOMPARE(gui.paths.size(), std::size_t{1});
+  QCOMPARE(batch.paths.size(), std::size_t{1});
+  const auto& a = gui.paths[0];
+  const auto& b = batch.paths[0];
+  QCOMPARE(QString::fromStdString(a.name), QString::fromStdString(b.name));
+  QVERIFY(a.passStarts == b.passStarts);
+  QCOMPARE(a.poses.size(), b.poses.size());
+  double poseDiff = 0.0;
+  for (std::size_t i = 0; i < a.poses.size(); ++i) {
+    poseDiff = std::max(poseDiff, (a.poses[i].pose.matrix() - b.poses[i].pose.matrix()).norm());
+    poseDiff = std::max(poseDiff, (a.poses[i].contact - b.poses[i].contact).norm());
+  }
+  qInfo("%s: %zu passes, %zu poses; largest pose difference %.3g", field, a.passStarts.size(),
+        a.poses.size(), poseDiff);
+  QVERIFY(poseDiff <= 1e-9);
+  QCOMPARE(gui.states.size(), batch.states.size());
+  for (std::size_t s = 0; s < gui.states.size(); ++s) {
+    QCOMPARE(QString::fromStdString(gui.states[s].name),
+             QString::fromStdString(batch.states[s].name));
+    QVERIFY2(maxDifference(gui.states[s].heights, batch.states[s].heights) <= 1e-9,
+             gui.states[s].name.c_str());
+  }
+  QVERIFY(maxDifference(gui.part->allHeights(), batch.part->allHeights()) <= 1e-9);
+  const auto values = [field](const ddfcam::planning::Project& p) {
+    for (const auto& f : p.fields)
+      if (f.name == field) return f.values;
+    return std::vector<float>{};
+  };
+  QVERIFY(!values(batch).empty());
+  QVERIFY(maxDifference(values(gui), values(batch)) <= 1e-9);
+}
+
 void BatchJobGuiTest::jobReproducesTheWorkbench() {
   QTemporaryDir tmp;
   QVERIFY(tmp.isValid());
@@ -165,37 +203,7 @@ void BatchJobGuiTest::jobReproducesTheWorkbench() {
     QVERIFY(gui.regions[r].faces == batch.regions[r].faces);
   QCOMPARE(gui.tools.size(), std::size_t{1});
   QVERIFY(gui.tools[0] == batch.tools[0]);
-  QCOMPARE(gui.paths.size(), std::size_t{1});
-  QCOMPARE(batch.paths.size(), std::size_t{1});
-  const auto& a = gui.paths[0];
-  const auto& b = batch.paths[0];
-  QCOMPARE(QString::fromStdString(a.name), QString::fromStdString(b.name));
-  QVERIFY(a.passStarts == b.passStarts);
-  QCOMPARE(a.poses.size(), b.poses.size());
-  double poseDiff = 0.0;
-  for (std::size_t i = 0; i < a.poses.size(); ++i) {
-    poseDiff = std::max(poseDiff, (a.poses[i].pose.matrix() - b.poses[i].pose.matrix()).norm());
-    poseDiff = std::max(poseDiff, (a.poses[i].contact - b.poses[i].contact).norm());
-  }
-  qInfo("%zu passes, %zu poses; largest pose difference %.3g", a.passStarts.size(), a.poses.size(),
-        poseDiff);
-  QVERIFY(poseDiff <= 1e-9);
-
-  QCOMPARE(gui.states.size(), batch.states.size());
-  for (std::size_t s = 0; s < gui.states.size(); ++s) {
-    QCOMPARE(QString::fromStdString(gui.states[s].name),
-             QString::fromStdString(batch.states[s].name));
-    QVERIFY2(maxDifference(gui.states[s].heights, batch.states[s].heights) <= 1e-9,
-             gui.states[s].name.c_str());
-  }
-  QVERIFY(maxDifference(gui.part->allHeights(), batch.part->allHeights()) <= 1e-9);
-  const auto deviation = [](const ddfcam::planning::Project& p) {
-    for (const auto& f : p.fields)
-      if (f.name == "deviation") return f.values;
-    return std::vector<float>{};
-  };
-  QVERIFY(!deviation(batch).empty());
-  QVERIFY(maxDifference(deviation(gui), deviation(batch)) <= 1e-9);
+  compareResults(gui, batch, "deviation");
 }
 
 void BatchJobGuiTest::refinedJobReproducesTheSpacingRefinementPanel() {
@@ -230,31 +238,7 @@ void BatchJobGuiTest::refinedJobReproducesTheSpacingRefinementPanel() {
   waitOk();
   const ddfcam::planning::Project& gui = project();
 
-  QCOMPARE(gui.paths.size(), std::size_t{1});
-  QCOMPARE(batch.paths.size(), std::size_t{1});
-  const auto& a = gui.paths[0];
-  const auto& b = batch.paths[0];
-  QCOMPARE(QString::fromStdString(a.name), QString::fromStdString(b.name));
-  QVERIFY(a.passStarts == b.passStarts);
-  QCOMPARE(a.poses.size(), b.poses.size());
-  double poseDiff = 0.0;
-  for (std::size_t i = 0; i < a.poses.size(); ++i)
-    poseDiff = std::max(poseDiff, (a.poses[i].pose.matrix() - b.poses[i].pose.matrix()).norm());
-  qInfo("refined: %zu passes, %zu poses; largest pose difference %.3g", a.passStarts.size(),
-        a.poses.size(), poseDiff);
-  QVERIFY(poseDiff <= 1e-9);
-  QCOMPARE(gui.states.size(), batch.states.size());
-  for (std::size_t s = 0; s < gui.states.size(); ++s)
-    QVERIFY2(maxDifference(gui.states[s].heights, batch.states[s].heights) <= 1e-9,
-             gui.states[s].name.c_str());
-  QVERIFY(maxDifference(gui.part->allHeights(), batch.part->allHeights()) <= 1e-9);
-  const auto error = [](const ddfcam::planning::Project& p) {
-    for (const auto& f : p.fields)
-      if (f.name == "refinement error") return f.values;
-    return std::vector<float>{};
-  };
-  QVERIFY(!error(batch).empty());
-  QVERIFY(maxDifference(error(gui), error(batch)) <= 1e-9);
+  compareResults(gui, batch, "refinement error");
 }
 
 void BatchJobGuiTest::screenshotShowsTheErrorMap() {
