@@ -20,10 +20,12 @@ extern const Command kConvertCommand;
 extern const Command kExtractCommand;
 extern const Command kInfoCommand;
 extern const Command kDemoCommand;
-extern const Command kCurvatureCommand;  // section C
-extern const Command kPlanCommand;       // section L
-extern const Command kSimulateCommand;   // section BV
-extern const Command kRunCommand;        // section JB
-extern const Command kPathsCommand;      // section CP
+extern const Command kCurvatureCommand;   // section C
+extern const Command kPlanCommand;        // section L
+extern const Command kSimulateCommand;    // section BV
+extern const Command kRunCommand;         // section JB
+extern const Command kPathsCommand;       // section CP
+extern const Command kCompareCommand;     // section PRJ
+extern const Command kCompensateCommand;  // section PRJ
 
 }  // namespace ddfcam::cli

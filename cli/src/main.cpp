@@ -15,16 +15,17 @@ namespace {
 
 using ddfcam::cli::Command;
 
-constexpr std::array<const Command*, 9> kCommands = {
+constexpr std::array<const Command*, 11> kCommands = {
     &ddfcam::cli::kConvertCommand,  &ddfcam::cli::kExtractCommand,   &ddfcam::cli::kInfoCommand,
     &ddfcam::cli::kDemoCommand,     &ddfcam::cli::kCurvatureCommand, &ddfcam::cli::kPlanCommand,
-    &ddfcam::cli::kSimulateCommand, &ddfcam::cli::kRunCommand,       &ddfcam::cli::kPathsCommand};
+    &ddfcam::cli::kSimulateCommand, &ddfcam::cli::kRunCommand,       &ddfcam::cli::kPathsCommand,
+    &ddfcam::cli::kCompareCommand,  &ddfcam::cli::kCompensateCommand};
 
 void printUsage(std::FILE* out) {
   std::fprintf(out,
                "usage: ddfcam-cli <command> [options]\n\n"
                "Discrete Displacement Field tools for grinding path planning.\n\ncommands:\n");
-  for (const Command* c : kCommands) std::fprintf(out, "  %-9s %s\n", c->name, c->summary);
+  for (const Command* c : kCommands) std::fprintf(out, "  %-10s %s\n", c->name, c->summary);
   std::fprintf(out, "\nRun 'ddfcam-cli <command> --help' for the options of a command.\n");
 }
 

@@ -178,6 +178,10 @@ ConversionResult convertMeshToDdf(const TriangleMesh& mesh, const ConversionPara
   result.ddf =
       DisplacementField(std::move(support), std::move(normals.normals), params.resolution, 0.0f);
   reportProgress(params.progress, 0.2);
+  if (!params.chooseLengths) {
+    reportProgress(params.progress, 1.0);
+    return result;
+  }
   VectorLengthParams lengths = params.lengths;
   if (params.progress) lengths.progress = [&](double x) { return params.progress(0.2 + 0.7 * x); };
   result.lengths = chooseVectorLengths(result.ddf, lengths);

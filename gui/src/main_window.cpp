@@ -9,8 +9,11 @@
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/job_progress_widget.h>
 #include <ddfcam/gui/job_runner.h>
+#include <ddfcam/gui/mould_view.h>
 #include <ddfcam/gui/panels/error_map_panel.h>
 #include <ddfcam/gui/panels/fields_panel.h>
+#include <ddfcam/gui/panels/mould_panel.h>
+#include <ddfcam/gui/panels/mould_tools_panel.h>
 #include <ddfcam/gui/panels/part_panel.h>
 #include <ddfcam/gui/panels/pick_panel.h>
 #include <ddfcam/gui/panels/segmentation_panel.h>
@@ -40,6 +43,7 @@
 #include <QScrollBar>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QUndoStack>
 
 namespace ddfcam::gui {
@@ -48,8 +52,15 @@ MainWindow::MainWindow(WorkbenchDialogs dialogs, WorkbenchOptions options, QWidg
     : QMainWindow(parent), dialogs_(withDefaultDialogs(std::move(dialogs), this)) {
   setWindowTitle(tr("ddfcam workbench"));
   setAcceptDrops(true);
-  view_ = new VtkView(this);
-  setCentralWidget(view_);
+  // The part and the mould study each get a tab of the central area.
+  centralTabs_ = new QTabWidget(this);
+  centralTabs_->setObjectName("centralTabs");
+  view_ = new VtkView(centralTabs_);
+  centralTabs_->addTab(view_, tr("Part"));
+  mouldView_ = new MouldView(centralTabs_);
+  mouldView_->setObjectName("mouldView");
+  centralTabs_->addTab(mouldView_, tr("Mould"));
+  setCentralWidget(centralTabs_);
   createServices(options);
   createDocks();
   createFileMenu();
@@ -120,6 +131,7 @@ void MainWindow::createDocks() {
   plots_->raise();
   workbench_ = std::make_unique<Workbench>(
       Workbench{*document_, *jobs_, *partView_, *plots_, *console_, dialogs_.error});
+  workbench_->mouldView = mouldView_;
 }
 
 void MainWindow::registerPanel(Panel* panel) {
@@ -159,6 +171,8 @@ void MainWindow::registerDefaultPanels() {
   registerPanel(new SegmentationPanel(*workbench_));
   registerPanel(new ErrorMapPanel(*workbench_));
   registerPanel(new SpacingRefinementPanel(*workbench_));
+  registerPanel(new MouldPanel(*workbench_));
+  registerPanel(new MouldToolsPanel(*workbench_));
   if (auto* first = findChild<QDockWidget*>("panel_fields")) first->raise();
 }
 

@@ -9,6 +9,7 @@
 
 #include "byte_codec.h"
 #include "file_access.h"
+#include "mould_study_chunk.h"
 #include "project_chunks.h"
 #include "project_layout.h"
 
@@ -54,6 +55,9 @@ class ProjectDecoder {
     } else if (chunk.tag == detail::kTagDesign) {
       if (project_.designMesh) in.fail("a second design mesh");
       project_.designMesh = detail::readDesignMesh(in);
+    } else if (chunk.tag == detail::kTagMould && version_ >= 4) {
+      if (project_.mould) in.fail("a second mould study");
+      project_.mould = detail::readMouldStudy(in);
     } else {
       addListItem(chunk.tag, in);
     }
@@ -90,7 +94,7 @@ class ProjectDecoder {
     } else if (detail::isOptionalChunkTag(tag)) {
       skip(in);
     } else {
-      in.fail("unknown chunk type in format version " + std::to_string(kProjectFormatVersion) +
+      in.fail("unknown chunk type in format version " + std::to_string(version_) +
               " (damaged file, or written by an incompatible program)");
     }
   }
@@ -134,6 +138,7 @@ std::string encodeProject(const planning::Project& project) {
     detail::putString(out, surface.name);
     out.append(encodeDdf(surface.ddf));
   }
+  if (project.mould) detail::putMouldStudy(encoder.beginChunk(detail::kTagMould), *project.mould);
   return encoder.finish();
 }
 

@@ -95,13 +95,43 @@ void checkSameSupport(const ddf::DisplacementField& a, const ddf::DisplacementFi
   }
 }
 
+// Unit normals per copy of the surface through @p points (laid out like the heights), oriented
+// like the copy's vector v; v's direction where no valid raster triangle surrounds the point.
+std::vector<Vec3> orientedUnitNormals(const ddf::DisplacementField& ddf,
+                                      const std::vector<Vec3>& points) {
+  const std::vector<Vec3> sums = pointNormals(ddf, points);
+  std::vector<Vec3> out(points.size());
+  const int n = ddf.raster().steps();
+  tbb::parallel_for(tbb::blocked_range<int>(0, ddf.faceCount()), [&](const auto& range) {
+    for (int f = range.begin(); f != range.end(); ++f) {
+      std::size_t l = static_cast<std::size_t>(f) * ddf.pointsPerFace();
+      for (int k = 0; k <= n; ++k)
+        for (int i = 0; i + k <= n; ++i, ++l) {
+          const Vec3 v = ddf.vectorAt(f, ddf.rasterBary(i, k));
+          const Vec3& sum = sums[ddf.topology().id(f, i, k)];
+          if (!(sum.norm() > 0.0)) {
+            out[l] = v.normalized();
+            continue;
+          }
+          const Vec3 unit = sum.normalized();
+          out[l] = v.dot(unit) < 0.0 ? Vec3(-unit) : unit;
+        }
+    }
+  });
+  return out;
+}
+
 }  // namespace
+
+std::vector<Vec3> rasterPointNormals(const ddf::DisplacementField& ddf) {
+  return orientedUnitNormals(ddf, surfacePoints(ddf, ddf.allHeights()));
+}
 
 ScalarField deviationMap(const ddf::DisplacementField& produced,
                          std::span<const float> desiredHeights) {
   detail::checkFieldSize(produced, desiredHeights.size(), "deviationMap: desired heights");
-  const std::vector<Vec3> desiredPoints = surfacePoints(produced, desiredHeights);
-  const std::vector<Vec3> normals = pointNormals(produced, desiredPoints);
+  const std::vector<Vec3> normals =
+      orientedUnitNormals(produced, surfacePoints(produced, desiredHeights));
   ScalarField field{"deviation", "mm", true, std::vector<float>(desiredHeights.size())};
   const std::vector<float>& heights = produced.allHeights();
   const int n = produced.raster().steps();
@@ -111,11 +141,10 @@ ScalarField deviationMap(const ddf::DisplacementField& produced,
       for (int k = 0; k <= n; ++k)
         for (int i = 0; i + k <= n; ++i, ++l) {
           const Vec3 v = produced.vectorAt(f, produced.rasterBary(i, k));
-          const Vec3& sum = normals[produced.topology().id(f, i, k)];
-          // Without a valid raster triangle around the point, v's direction stands in for n.
-          const double vn = sum.norm() > 0.0 ? std::abs(v.dot(sum.normalized())) : v.norm();
+          // v . n >= 0 by the orientation; n = v / |v| where no raster triangle is valid.
           field.values[l] = static_cast<float>(
-              (static_cast<double>(heights[l]) - static_cast<double>(desiredHeights[l])) * vn);
+              (static_cast<double>(heights[l]) - static_cast<double>(desiredHeights[l])) *
+              v.dot(normals[l]));
         }
     }
   });

@@ -84,6 +84,35 @@ ToleranceClass classify(double deviationMm, const ToleranceBand& band) {
   return ToleranceClass::InTolerance;
 }
 
+namespace {
+
+// Distinct raster points (PointId) among the samples' copies.
+std::size_t distinctPoints(const ddf::DisplacementField& ddf,
+                           const std::vector<detail::WeightedValue>& samples) {
+  std::vector<char> seen(ddf.topology().pointCount(), 0);
+  std::size_t count = 0;
+  for (const detail::WeightedValue& s : samples) {
+    const int f = static_cast<int>(s.index / ddf.pointsPerFace());
+    const ddf::RasterCoord c =
+        ddf.topology().coord({f, static_cast<std::uint32_t>(s.index % ddf.pointsPerFace())});
+    char& mark = seen[ddf.topology().id(f, c.i, c.k)];
+    if (!mark) ++count;
+    mark = 1;
+  }
+  return count;
+}
+
+// Area-weighted sigma about the mean in a second pass: sum(w x^2)/A - mean^2 cancels badly when
+// the mean is large against the spread.
+double weightedSigma(const std::vector<detail::WeightedValue>& samples, double mean, double area) {
+  double spread = 0.0;
+  for (const detail::WeightedValue& s : samples)
+    spread += s.weight * (s.value - mean) * (s.value - mean);
+  return std::sqrt(spread / area);
+}
+
+}  // namespace
+
 ErrorStatistics errorStatistics(const ScalarField& deviation, const ddf::DisplacementField& ddf,
                                 const ToleranceBand& band, std::span<const int> faces) {
   validateToleranceBand(band);
@@ -95,33 +124,21 @@ ErrorStatistics errorStatistics(const ScalarField& deviation, const ddf::Displac
   stats.maxMm = -std::numeric_limits<double>::infinity();
   stats.minMm = std::numeric_limits<double>::infinity();
   double sum = 0.0, sumSquares = 0.0, inside = 0.0, left = 0.0, over = 0.0;
-  std::vector<char> seen(ddf.topology().pointCount(), 0);
   for (const detail::WeightedValue& s : samples) {
     stats.maxMm = std::max(stats.maxMm, s.value);
     stats.minMm = std::min(stats.minMm, s.value);
     stats.areaMm2 += s.weight;
     sum += s.weight * s.value;
     sumSquares += s.weight * s.value * s.value;
-    switch (classify(s.value, band)) {
-      case ToleranceClass::MaterialLeft:
-        left += s.weight;
-        break;
-      case ToleranceClass::Overcut:
-        over += s.weight;
-        break;
-      case ToleranceClass::InTolerance:
-        inside += s.weight;
-        break;
-    }
-    const int f = static_cast<int>(s.index / ddf.pointsPerFace());
-    const ddf::RasterCoord c =
-        ddf.topology().coord({f, static_cast<std::uint32_t>(s.index % ddf.pointsPerFace())});
-    char& mark = seen[ddf.topology().id(f, c.i, c.k)];
-    if (!mark) ++stats.points;
-    mark = 1;
+    const ToleranceClass cls = classify(s.value, band);
+    (cls == ToleranceClass::MaterialLeft ? left
+     : cls == ToleranceClass::Overcut    ? over
+                                         : inside) += s.weight;
   }
+  stats.points = distinctPoints(ddf, samples);
   stats.meanMm = sum / stats.areaMm2;
   stats.rmsMm = std::sqrt(sumSquares / stats.areaMm2);
+  stats.sigmaMm = weightedSigma(samples, stats.meanMm, stats.areaMm2);
   stats.inTolerancePercent = 100.0 * inside / stats.areaMm2;
   stats.materialLeftPercent = 100.0 * left / stats.areaMm2;
   stats.overcutPercent = 100.0 * over / stats.areaMm2;

@@ -160,22 +160,11 @@ bool sameBits(const ddf::Vec3& a, const ddf::Vec3& b) {
 }
 
 bool sameMesh(const ddf::TriangleMesh& a, const ddf::TriangleMesh& b) {
-  if (a.vertices.size() != b.vertices.size() || a.triangles != b.triangles) return false;
-  for (std::size_t v = 0; v < a.vertices.size(); ++v)
-    if (!sameBits(a.vertices[v], b.vertices[v])) return false;
-  return true;
+  return triangleMeshesEqual(a, b);
 }
 
 bool sameDdf(const ddf::DisplacementField& a, const ddf::DisplacementField& b) {
-  if (a.vertexCount() != b.vertexCount() || a.faceCount() != b.faceCount() ||
-      a.resolution() != b.resolution())
-    return false;
-  for (int f = 0; f < a.faceCount(); ++f)
-    if (a.faceVertices(f) != b.faceVertices(f)) return false;
-  for (int v = 0; v < a.vertexCount(); ++v)
-    if (!sameBits(a.position(v), b.position(v)) || !sameBits(a.vector(v), b.vector(v)))
-      return false;
-  return sameBits(a.allHeights(), b.allHeights());
+  return displacementFieldsEqual(a, b);
 }
 
 template <class T, class Same>
@@ -249,6 +238,7 @@ void validateProject(const Project& project) {
   if (project.designMesh) checkMesh(*project.designMesh);
   for (const Tool& tool : project.tools) validateTool(tool);
   for (const ToolPath& path : project.paths) checkPath(path, project.tools.size());
+  if (project.mould) validateMouldStudy(*project.mould);
 }
 
 bool projectsEqual(const Project& a, const Project& b) {
@@ -257,7 +247,8 @@ bool projectsEqual(const Project& a, const Project& b) {
          sameOptional(a.designMesh, b.designMesh, sameMesh) &&
          sameEach(a.fields, b.fields, sameField) && sameEach(a.regions, b.regions, sameRegion) &&
          sameEach(a.tools, b.tools, sameTool) && sameEach(a.paths, b.paths, samePath) &&
-         sameEach(a.states, b.states, sameState) && sameEach(a.surfaces, b.surfaces, sameSurface);
+         sameEach(a.states, b.states, sameState) && sameEach(a.surfaces, b.surfaces, sameSurface) &&
+         sameOptional(a.mould, b.mould, mouldStudiesEqual);
 }
 
 }  // namespace ddfcam::planning

@@ -99,9 +99,9 @@ TEST(ProjectFileCorruption, HeaderProblemsAreNamed) {
   EXPECT_THAT(decodeError(encodeDdf(ddf::planePatch(params).ddf)),
               HasSubstr("it is a .ddf field file"));
   std::string newer = bytes;
-  test::putLeAt(newer, 8, 4, 4);
+  test::putLeAt(newer, 8, 5, 4);
   const std::string newerMessage =
-      "p.ddfproj: written by a newer ddfcam (format version 4, this build reads up to 3)";
+      "p.ddfproj: written by a newer ddfcam (format version 5, this build reads up to 4)";
   EXPECT_THAT(decodeError(newer), HasSubstr(newerMessage));
   EXPECT_THAT(decodeError(test::resealed(newer)), HasSubstr(newerMessage));
   std::string zero = bytes;
@@ -120,7 +120,7 @@ TEST(ProjectFileCorruption, UnknownAndMisplacedChunksAreRejected) {
   unknown.replace(chunkOffset(bytes, 3), 4, "TOOX");
   const std::string message = decodeError(test::resealed(unknown));
   EXPECT_THAT(message, HasSubstr("chunk 4 ('TOOX')"));
-  EXPECT_THAT(message, HasSubstr("unknown chunk type in format version 3"));
+  EXPECT_THAT(message, HasSubstr("unknown chunk type in format version 4"));
   EXPECT_THAT(decodeError(forged({})), HasSubstr("no 'PROJ' chunk"));
   EXPECT_THAT(decodeError(forged({{"TOOL", ""}, {"PROJ", infoPayload()}})),
               HasSubstr("the first chunk must be 'PROJ'"));

@@ -153,7 +153,7 @@ TEST(ProjectFile, SmallestFileMatchesTheDocumentedLayout) {
   planning::Project project;
   project.partName = "ab";
   std::string expected("DDFPRJ\x1a\n", 8);
-  expected += std::string("\x03\0\0\0", 4) + std::string("\x01\0\0\0", 4);
+  expected += std::string("\x04\0\0\0", 4) + std::string("\x01\0\0\0", 4);
   expected += std::string("\x32\0\0\0\0\0\0\0", 8);  // 50 bytes in all
   expected += "PROJ" + std::string("\x0a\0\0\0\0\0\0\0", 8);
   expected += std::string("\x02\0\0\0", 4) + "ab" + std::string(4, '\0');
@@ -259,8 +259,8 @@ TEST(ProjectFile, OlderVersionsLoadWithDefaultPlansAndToolSizes) {
     EXPECT_TRUE(planning::projectsEqual(expected, back));
     EXPECT_EQ(back.tools[0].chordToleranceMm, 0.005);  // planning::Tool's documented default
     EXPECT_EQ(back.tools[0].segments, 50);             // as stored
-    // Saving again writes version 3.
-    EXPECT_EQ(encodeProject(back).substr(8, 4), std::string("\x03\0\0\0", 4));
+    // Saving again writes version 4.
+    EXPECT_EQ(encodeProject(back).substr(8, 4), std::string("\x04\0\0\0", 4));
   }
 }
 
@@ -270,7 +270,7 @@ TEST(ProjectFile, ToolsOfEveryKindRoundTripWithAllSizes) {
   project.paths[0].tool = 5;
   ProjectReadReport report;
   const planning::Project back = decodeProject(encodeProject(project), "kinds", &report);
-  EXPECT_EQ(report.formatVersion, 3u);
+  EXPECT_EQ(report.formatVersion, 4u);
   expectSameProject(project, back);
   EXPECT_TRUE(planning::projectsEqual(project, back));
 }
@@ -333,7 +333,7 @@ TEST(ProjectFile, UnknownOptionalChunksAreSkippedAndReported) {
   const planning::Project back = decodeProject(withNotes, "later.ddfproj", &report);
   setLogSink(previous);
   expectSameProject(project, back);
-  EXPECT_EQ(report.formatVersion, 3u);
+  EXPECT_EQ(report.formatVersion, 4u);
   EXPECT_EQ(report.skippedChunks, (std::vector<std::string>{"later.ddfproj: chunk 4 ('note')",
                                                             "later.ddfproj: chunk 16 ('thmb')"}));
   ASSERT_EQ(logged.size(), 2u);
@@ -341,7 +341,7 @@ TEST(ProjectFile, UnknownOptionalChunksAreSkippedAndReported) {
   // The same chunk with an upper-case tag must be understood, so it is an error.
   EXPECT_THAT(test::ioErrorMessage(
                   [&] { decodeProject(withChunk(bytes, 3, "Note", "x"), "later.ddfproj"); }),
-              HasSubstr("chunk 4 ('Note'): unknown chunk type in format version 3"));
+              HasSubstr("chunk 4 ('Note'): unknown chunk type in format version 4"));
   // Optional or not, nothing may precede the project header.
   EXPECT_THAT(test::ioErrorMessage([&] { decodeProject(withChunk(bytes, 0, "note", ""), "x"); }),
               HasSubstr("the first chunk must be 'PROJ'"));

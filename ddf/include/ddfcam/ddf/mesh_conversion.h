@@ -24,6 +24,11 @@ struct ConversionParams {
   /// Choice of vector lengths (sec. 4.4). Default: VectorLengthParams defaults. Its progress
   /// callback is replaced by a share of @ref progress.
   VectorLengthParams lengths;
+  /// Choose the vector lengths (sec. 4.4) and fill the heights from the input. false keeps the
+  /// unit pseudo-normal directions, leaves every height at 0 (the support itself) and skips both
+  /// steps, for callers that set lengths and heights themselves (e.g. a deformation sequence,
+  /// which resets the lengths). Default true.
+  bool chooseLengths = true;
   /// Progress in [0, 1] and cancellation (throws Cancelled). Default none.
   ProgressCallback progress;
 };
@@ -49,8 +54,9 @@ struct ConversionResult {
 /// non-manifold or inconsistently oriented, and unused vertices; directions = angle-weighted
 /// pseudo-normals repaired for constraint 1; lengths by chooseVectorLengths; heights by the
 /// depth buffer's fill mode from the input mesh (the nearest intersection of every stubble with
-/// it in [-1, 1]). With the mesh as support the heights come out ~0 and the represented surface
-/// lies on the input up to float rounding (one-sided Hausdorff distance checked in the tests).
+/// it in [-1, 1]; lengths and fill are skipped when params.chooseLengths is false). With the mesh
+/// as support the heights come out ~0 and the represented surface lies on the input up to float
+/// rounding (one-sided Hausdorff distance checked in the tests).
 /// @throws InvalidInput for a bad resolution, an index out of range, or when no triangle
 /// survives. @throws Cancelled through params.progress.
 ConversionResult convertMeshToDdf(const TriangleMesh& mesh, const ConversionParams& params = {});

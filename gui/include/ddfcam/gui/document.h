@@ -28,7 +28,8 @@ enum class Change : unsigned {
   States = 1u << 6,    ///< simulation states
   Surfaces = 1u << 7,  ///< deformed / mould surfaces
   Design = 1u << 8,    ///< the design (reference) mesh
-  All = 0x1ffu,
+  Mould = 1u << 9,     ///< mould planning: surfaces, alignment, comparison, compensation
+  All = 0x3ffu,
 };
 Q_DECLARE_FLAGS(Changes, Change)
 Q_DECLARE_OPERATORS_FOR_FLAGS(Changes)

@@ -14,6 +14,7 @@ class QAction;
 class QLabel;
 class QMenu;
 class QSettings;
+class QTabWidget;
 
 namespace ddfcam::gui {
 
@@ -22,6 +23,7 @@ class ConsoleDock;
 class Document;
 class JobProgressWidget;
 class JobRunner;
+class MouldView;
 class Panel;
 class PartView;
 class PlotDock;
@@ -75,6 +77,10 @@ class MainWindow : public QMainWindow {
   bool waitForJobs(int timeoutMs = 60'000);
 
   VtkView* view() const { return view_; }
+  /// @brief The "Mould" tab: mould and formed surfaces (MouldView).
+  MouldView* mouldView() const { return mouldView_; }
+  /// @brief The central tabs ("Part": view(), "Mould": mouldView()).
+  QTabWidget* centralTabs() const { return centralTabs_; }
   Document& document() const { return *document_; }
   PartView& partView() const { return *partView_; }
   JobRunner& jobs() const { return *jobs_; }
@@ -106,6 +112,8 @@ class MainWindow : public QMainWindow {
 
   WorkbenchDialogs dialogs_;
   VtkView* view_ = nullptr;
+  QTabWidget* centralTabs_ = nullptr;
+  MouldView* mouldView_ = nullptr;
   CameraToolBar* cameraBar_ = nullptr;
   QLabel* status_ = nullptr;
   JobProgressWidget* jobProgress_ = nullptr;

@@ -15,6 +15,7 @@ namespace ddfcam::gui {
 class ConsoleDock;
 class Document;
 class JobRunner;
+class MouldView;
 class PartView;
 class PlotDock;
 
@@ -28,6 +29,7 @@ struct Workbench {
   PlotDock& plots;            ///< histogram and line plots
   ConsoleDock& console;       ///< message log
   ErrorReporter reportError;  ///< shows an error of a user action (dialog + console)
+  MouldView* mouldView = nullptr;  ///< the "Mould" tab's views (mould and formed surfaces)
 };
 
 /// @brief A workflow panel: a widget the main window puts in a dock, plus optional actions it

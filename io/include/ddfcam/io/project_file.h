@@ -12,13 +12,13 @@
 
 namespace ddfcam::io {
 
-/// @brief Project format version this build writes and the newest it reads (it reads 1 and 2
-/// too).
-inline constexpr std::uint32_t kProjectFormatVersion = 3;
+/// @brief Project format version this build writes and the newest it reads (it reads 1, 2 and
+/// 3 too).
+inline constexpr std::uint32_t kProjectFormatVersion = 4;
 
 /// @brief What decodeProject found besides the project itself.
 struct ProjectReadReport {
-  /// Format version of the file read (1, 2 or 3; default 0 before a read).
+  /// Format version of the file read (1 to 4; default 0 before a read).
   std::uint32_t formatVersion = 0;
   /// Optional chunks this build does not know and skipped, as "<source>: chunk 5 ('note')",
   /// in file order (default empty). Their content is not loaded and is not saved again.
@@ -49,7 +49,7 @@ struct ProjectReadReport {
 /// payload of an existing tag, or a chunk that changes the meaning of others) takes an
 /// upper-case tag and a version bump. Any other unknown tag is an error.
 ///
-/// Chunks of version 3 (all upper-case, so none is optional). "PROJ" comes first; the others may
+/// Chunks of version 4 (all upper-case, so none is optional). "PROJ" comes first; the others may
 /// follow in any order (encodeProject writes them in the order of this table), and the order of
 /// the chunks with one tag is the order of the project's vector:
 /// | tag | count | payload |
@@ -63,6 +63,7 @@ struct ProjectReadReport {
 /// | "REGN" | per region | string name, 3 f32 colour RGB, u64 N, N i32 support faces, plan |
 /// | "STAT" | per state | string name, u64 N, N f32 heights |
 /// | "SURF" | per surface | string name, then to the payload's end the .ddf encoding |
+/// | "MOLD" | 0..1 | the mould study (planning::MouldStudy, from version 4 on), below |
 ///
 /// The S i32 of a path are its passStarts, the feed is feedMmPerMin (mm/min), kind is the
 /// ToolKind value.
@@ -79,7 +80,24 @@ struct ProjectReadReport {
 /// and balls); a version-2 file loads with the later fields at planning::Tool's defaults (0,
 /// chord tolerance 0.005 mm) and the stored segment count. Version 1 differs from version 2
 /// also in "REGN": its payload ends after the faces, and its regions load with the default
-/// RegionPlan. Saving always writes version 3.
+/// RegionPlan. Version 3 differs from version 4 only in having no "MOLD" chunk (in a version-3
+/// file it is an unknown chunk). Saving always writes version 4.
+///
+/// The mould study ("MOLD"; flags are u8 0/1, a "ddf" is a u32 byte count followed by the
+/// complete .ddf encoding, a "list" is u64 N followed by N values, i32 faces or f32 values):
+/// surface mould; u8 hasFormed, [surface formed]; alignment: i32 method, 16 f64 transform
+/// (row-major), f64 rmsMm, u64 P, P x (3 f64 formed point, 3 f64 mould point); comparison
+/// params: i32 resolution, f64 band lower, f64 band upper, u8 flipNormal, f64 reachMm, f64
+/// crustSafety, i32 maxStages (the progress callback is not stored); u8 hasResult, [result];
+/// u8 hasCompensation, [history]. A surface is string name, string sourcePath, the mesh as in
+/// "DSGN", u64 F fields, each string name, string unit, u8 perCell, list of f32 values. A result
+/// is u64 S stages, each ddf, f64 fraction, list of crossing faces; u64 N deformedPoints, N x 3
+/// f64 (mm); lists of crossing and of unresolved faces; u64 missingPoints; the deviation as a
+/// "FELD" payload; u64 N deviation vectors, N x 3 f64 (mm); statistics: f64 max, min, mean, rms,
+/// inTolerancePercent, materialLeftPercent, overcutPercent, areaMm2, u64 points; band: f64
+/// lower, f64 upper. A history is the target ddf, u64 I iterations, each list of f32
+/// mouldHeights, list of f32 formedHeights, string formedSource, f64 maxDeviationMm, f64
+/// rmsDeviationMm, f64 lambda, u64 pointsOutsideCrust.
 ///
 /// A pose is 19 f64: the 4 x 4 matrix of PathPose::pose in column-major order (bottom row
 /// included, so the stored matrix is exactly the one in memory), then the contact x y z (mm).
@@ -91,7 +109,7 @@ std::string encodeProject(const planning::Project& project);
 
 /// @brief Rebuilds a project from .ddfproj content; the exact inverse of encodeProject
 /// (planning::projectsEqual holds between the original and the decoded project).
-/// Reads format versions 1, 2 and 3; skips unknown optional chunks (see encodeProject).
+/// Reads format versions 1 to 4; skips unknown optional chunks (see encodeProject).
 /// @param bytes whole file content. @param sourceName file name used in messages.
 /// @param report if not null, receives the file's version and the skipped optional chunks.
 /// @throws IoError naming @p sourceName and the problem if the content is empty, truncated

@@ -5,7 +5,7 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/surface_sampling.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/scalar_field.h>
 #include <ddfcam/planning/tool_path.h>
 
 #include <cstddef>
@@ -57,6 +57,14 @@ ScalarField deviationMap(const ddf::DisplacementField& produced,
 ScalarField deviationMap(const ddf::DisplacementField& produced,
                          const ddf::DisplacementField& desired);
 
+/// @brief Unit normal of the represented surface of @p ddf at every raster point copy, laid out
+/// like allHeights(): the area-weighted mean of the normals of the raster triangles (fig. 7.1a)
+/// around the raster point, summed over all faces sharing it, oriented to the side the copy's
+/// interpolated displacement vector v points to. Where no valid raster triangle surrounds the
+/// point (non-finite heights), v's direction stands in. The normals deviationMap() uses.
+/// @return F * pointsPerFace unit vectors, part frame.
+std::vector<ddf::Vec3> rasterPointNormals(const ddf::DisplacementField& ddf);
+
 /// @brief Area of the represented surface of @p ddf that belongs to each raster point copy, mm^2,
 /// laid out like allHeights(): each raster triangle of a face gives a third of its area to each
 /// of its three corners. A shared point's area is thus split among its copies and counts once in
@@ -70,6 +78,7 @@ struct ErrorStatistics {
   double minMm = 0.0;                ///< smallest deviation, mm
   double meanMm = 0.0;               ///< area-weighted mean, mm
   double rmsMm = 0.0;                ///< area-weighted root mean square, mm
+  double sigmaMm = 0.0;              ///< area-weighted standard deviation about the mean, mm
   double inTolerancePercent = 0.0;   ///< % of the area with e_l <= deviation <= e_u
   double materialLeftPercent = 0.0;  ///< % of the area with deviation > e_u
   double overcutPercent = 0.0;       ///< % of the area with deviation < e_l

@@ -4,7 +4,9 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/triangle_mesh.h>
+#include <ddfcam/planning/mould_study.h>
 #include <ddfcam/planning/region_plan.h>
+#include <ddfcam/planning/scalar_field.h>
 #include <ddfcam/planning/tool.h>
 #include <ddfcam/planning/tool_path.h>
 
@@ -14,18 +16,6 @@
 #include <vector>
 
 namespace ddfcam::planning {
-
-/// @brief A scalar per raster point of the part, laid out like the heights
-/// (DisplacementField::allHeights(): face after face, Raster order; F * pointsPerFace values).
-/// Copies of a shared raster point may differ (each face keeps its own); NaN marks "no value".
-struct ScalarField {
-  std::string name;           ///< e.g. "height", "material removed"
-  std::string unit;           ///< e.g. "mm", "1/mm"; empty for dimensionless
-  bool isSigned = false;      ///< values of both signs are meaningful (use a diverging map)
-  std::vector<float> values;  ///< F * pointsPerFace values
-
-  bool operator==(const ScalarField&) const = default;
-};
 
 /// @brief A named region of the part: a set of support faces.
 struct Region {
@@ -65,6 +55,7 @@ struct Project {
   std::vector<ToolPath> paths;          ///< tool paths
   std::vector<SimulationState> states;  ///< height snapshots, e.g. "stock" first
   std::vector<NamedSurface> surfaces;   ///< deformed / mould surfaces
+  std::optional<MouldStudy> mould;      ///< mould planning: comparison, compensation
 };
 
 /// @brief Checks the invariants a Project must hold before it is saved or shown: every
@@ -72,13 +63,14 @@ struct Project {
 /// range; every path's tool index is valid and its passStarts are strictly ascending, in range
 /// and start with 0 when the path has poses; every tool passes validateTool(); the design
 /// mesh's triangles reference existing vertices; fields, states or regions without a part are
-/// an error.
+/// an error; the mould study, if any, passes validateMouldStudy() (it needs no part).
 /// @throws InvalidInput naming the first offending item (e.g. "field 'height': 12 values,
 /// expected 1536").
 void validateProject(const Project& project);
 
 /// @brief Exact equality of two projects: every value bit-identical (heights, positions,
-/// vectors and face vertex order of all DDFs included). NaN equals NaN at the same place.
+/// vectors and face vertex order of all DDFs included, the mould study by mouldStudiesEqual()).
+/// NaN equals NaN at the same place.
 bool projectsEqual(const Project& a, const Project& b);
 
 }  // namespace ddfcam::planning

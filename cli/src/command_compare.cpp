@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: MIT
+// ddfcam-cli compare: deviation of a formed surface from its mould on the mould's DDF
+// (dissertation ch. 9): statistics, staged sequence, deviation map and vectors.
+#include <ddfcam/error.h>
+#include <ddfcam/io/deviation_export.h>
+#include <ddfcam/planning/error_map.h>
+#include <ddfcam/planning/surface_alignment.h>
+#include <ddfcam/planning/surface_comparison.h>
+
+#include "arguments.h"
+#include "commands.h"
+#include "console.h"
+#include "json_writer.h"
+#include "mould_options.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace ddfcam::cli {
+namespace {
+
+constexpr const char* kHelp =
+    "usage: ddfcam-cli compare MOULD FORMED [options]\n\n"
+    "Compares the formed (deformed) surface FORMED with the mould (or target) surface MOULD\n"
+    "(.stl/.obj/.ply/.off/.vtp/.vtu, mm): builds a DDF on the mould, represents the formed\n"
+    "surface as its heights (split into a sequence of smaller deformations where the\n"
+    "unique-projection property fails, fig. 9.5) and reports the signed deviation along the\n"
+    "mould normal: > 0 short of the mould (blue), < 0 beyond it (red), inside the band green.\n\n"
+    "options:\n"
+    "  -o, --output FILE     deviation map as VTK PolyData (.vtp): the mould's raster mesh with\n"
+    "                        'deviation' (mm), 'tolerance_class' (-1, 0, +1), 'deviation_vector'\n"
+    "  --csv FILE            deviation vectors, one row per raster point (x,y,z,dx,dy,dz,dev)\n"
+    "  --json FILE           statistics, stages, histogram and timings as JSON\n"
+    "  --resolution M        raster resolution of the mould DDF (default 4)\n"
+    "  --tolerance T         tolerance band [-T, T], mm (default 0.5)\n"
+    "  --band LO,HI          tolerance band [LO, HI], mm, LO <= 0 <= HI (instead of --tolerance)\n"
+    "  --flip-normal         reverse the mould normal (and the sign of every deviation)\n"
+    "  --align none|best-fit alignment of FORMED onto MOULD (default none: as positioned)\n"
+    "  --max-stages N        most DDFs in the deformation sequence (default 12)\n"
+    "  --reach MM            length of the displacement vectors (default: from the distance)\n"
+    "  -h, --help            show this help\n";
+
+constexpr std::array<OptionSpec, 10> kOptions = {{{"output", 'o', true},
+                                                  {"csv", '\0', true},
+                                                  {"json", '\0', true},
+                                                  {"resolution", '\0', true},
+                                                  {"tolerance", '\0', true},
+                                                  {"band", '\0', true},
+                                                  {"flip-normal", '\0', false},
+                                                  {"align", '\0', true},
+                                                  {"max-stages", '\0', true},
+                                                  {"reach", '\0', true}}};
+
+struct CompareRun {
+  planning::LoadedSurface mould, formed;
+  std::optional<planning::RigidAlignment> alignment;
+  planning::SurfaceComparison result;
+  double loadSeconds = 0, alignSeconds = 0, compareSeconds = 0;
+};
+
+planning::ComparisonParams comparisonParams(const Arguments& args) {
+  planning::ComparisonParams params;
+  params.resolution = args.integer("resolution", params.resolution, 2, 64);
+  if (args.has("tolerance") && args.has("band"))
+    throw UsageError("compare: give either --tolerance or --band, not both");
+  if (const auto t = args.positiveNumber("tolerance")) params.band = {-*t, *t};
+  if (const auto band = args.value("band")) {
+    const std::vector<double> v = parseNumberList(*band, 2, "band");
+    if (v[0] > 0.0 || v[1] < 0.0) throw UsageError("--band: need LO <= 0 <= HI, got " + *band);
+    params.band = {v[0], v[1]};
+  }
+  params.flipNormal = args.has("flip-normal");
+  params.sequence.maxStages = args.integer("max-stages", params.sequence.maxStages, 1, 1000);
+  if (const auto reach = args.positiveNumber("reach")) params.sequence.reachMm = *reach;
+  return params;
+}
+
+void align(const std::string& method, CompareRun& run) {
+  if (method == "none") return;
+  if (method != "best-fit") throw UsageError("--align: expected none or best-fit, got " + method);
+  const auto start = std::chrono::steady_clock::now();
+  planning::BestFitParams params;
+  params.progress = consoleProgress("aligning");
+  run.alignment = planning::alignBestFit(run.formed.mesh, run.mould.mesh, params);
+  endProgressLine();
+  for (Eigen::Vector3d& v : run.formed.mesh.vertices) v = run.alignment->transform * v;
+  run.alignSeconds = secondsSince(start);
+  std::fprintf(stderr, "warning: %s\n", planning::kBestFitWarning);
+  std::printf(
+      "  best fit: RMS %.4g -> %.4g mm, rotation %.4g deg, shift %.4g mm, %d iterations%s\n",
+      run.alignment->rmsBeforeMm, run.alignment->rmsMm,
+      planning::rotationAngleDeg(run.alignment->transform),
+      run.alignment->transform.translation().norm(), run.alignment->iterations,
+      run.alignment->converged ? "" : " (not converged)");
+}
+
+/// Standard deviation from the area-weighted mean and RMS.
+double sigmaOf(const planning::ErrorStatistics& s) {
+  return std::sqrt(std::max(0.0, s.rmsMm * s.rmsMm - s.meanMm * s.meanMm));
+}
+
+void printSummary(const CompareRun& run) {
+  const planning::ErrorStatistics& s = run.result.statistics;
+  const planning::ToleranceBand& band = run.result.band;
+  const ddf::DeformationSequence& seq = run.result.sequence;
+  std::printf("  deviation (mm): max %.4g, min %.4g, mean %.4g, sigma %.4g, rms %.4g\n", s.maxMm,
+              s.minMm, s.meanMm, sigmaOf(s), s.rmsMm);
+  std::printf("  within [%.4g, %.4g] mm: %.2f %% of %.6g mm^2 (short %.2f %%, beyond %.2f %%)\n",
+              band.lowerMm, band.upperMm, s.inTolerancePercent, s.areaMm2, s.materialLeftPercent,
+              s.overcutPercent);
+  std::printf("  stages: %zu (fractions", seq.stages.size());
+  for (const ddf::DeformationStage& stage : seq.stages) std::printf(" %.3g", stage.fraction);
+  std::printf("), crossing faces %zu, unresolved faces %zu, missing points %zu\n",
+              seq.crossingFaces.size(), seq.unresolvedFaces.size(), seq.missingPoints);
+  std::printf("  time (s): load %.3f, align %.3f, compare %.3f\n", run.loadSeconds,
+              run.alignSeconds, run.compareSeconds);
+}
+
+void writeHistogram(JsonWriter& json, const CompareRun& run) {
+  const planning::ErrorStatistics& s = run.result.statistics;
+  const double pad = std::max(1e-9, 1e-6 * (std::abs(s.maxMm) + std::abs(s.minMm)));
+  // Weighted by the mould's area, as the statistics are (stage 0's heights describe the formed
+  // surface, whose area differs).
+  ddf::DisplacementField mould = run.result.sequence.stages.front().ddf;
+  std::fill(mould.allHeights().begin(), mould.allHeights().end(), 0.0f);
+  const planning::AreaHistogram h =
+      planning::errorHistogram(run.result.deviation, mould, 40, s.minMm - pad, s.maxMm + pad);
+  json.key("histogram").beginObject();
+  json.key("lower_mm").value(h.lowerMm).key("upper_mm").value(h.upperMm);
+  json.key("bin_width_mm").value(h.binWidthMm());
+  json.key("area_mm2").beginArray();
+  for (const double a : h.areaMm2) json.value(a);
+  json.endArray();
+  json.key("below_mm2").value(h.belowMm2).key("above_mm2").value(h.aboveMm2).endObject();
+}
+
+void writeStatistics(JsonWriter& json, const planning::ErrorStatistics& s) {
+  json.key("statistics").beginObject();
+  json.key("max_mm").value(s.maxMm).key("min_mm").value(s.minMm);
+  json.key("mean_mm").value(s.meanMm).key("sigma_mm").value(sigmaOf(s));
+  json.key("rms_mm").value(s.rmsMm);
+  json.key("within_band_percent").value(s.inTolerancePercent);
+  json.key("short_percent").value(s.materialLeftPercent);
+  json.key("beyond_percent").value(s.overcutPercent);
+  json.key("area_mm2").value(s.areaMm2).key("points").value(s.points).endObject();
+}
+
+void writeSequence(JsonWriter& json, const ddf::DeformationSequence& seq) {
+  json.key("stages").beginArray();
+  for (const ddf::DeformationStage& stage : seq.stages) {
+    json.beginObject().key("fraction").value(stage.fraction);
+    json.key("crossing_faces").value(stage.crossingFaces.size()).endObject();
+  }
+  json.endArray();
+  json.key("crossing_faces").value(seq.crossingFaces.size());
+  json.key("unresolved_faces").value(seq.unresolvedFaces.size());
+  json.key("missing_points").value(seq.missingPoints);
+}
+
+void writeJson(const Arguments& args, const CompareRun& run, const std::filesystem::path& file) {
+  JsonWriter json;
+  json.beginObject();
+  json.key("mould").value(run.mould.sourcePath).key("formed").value(run.formed.sourcePath);
+  json.key("resolution").value(run.result.sequence.stages.front().ddf.resolution());
+  json.key("band").beginObject().key("lower_mm").value(run.result.band.lowerMm);
+  json.key("upper_mm").value(run.result.band.upperMm).endObject();
+  json.key("flip_normal").value(args.has("flip-normal"));
+  json.key("alignment").beginObject().key("method").value(run.alignment ? "best-fit" : "none");
+  if (run.alignment) {
+    json.key("rms_before_mm").value(run.alignment->rmsBeforeMm);
+    json.key("rms_mm").value(run.alignment->rmsMm);
+    json.key("rotation_deg").value(planning::rotationAngleDeg(run.alignment->transform));
+  }
+  json.endObject();
+  writeStatistics(json, run.result.statistics);
+  writeSequence(json, run.result.sequence);
+  writeHistogram(json, run);
+  json.key("seconds").beginObject().key("load").value(run.loadSeconds);
+  json.key("align").value(run.alignSeconds).key("compare").value(run.compareSeconds).endObject();
+  json.endObject();
+  writeTextFile(json.str(), file, "compare");
+}
+
+void writeOutputs(const Arguments& args, const CompareRun& run) {
+  if (const auto vtp = args.value("output")) {
+    io::writeDeviationVtp(run.result, *vtp);
+    std::printf("wrote %s\n", vtp->c_str());
+  }
+  if (const auto csv = args.value("csv")) {
+    io::writeDeviationCsv(run.result, *csv);
+    std::printf("wrote %s\n", csv->c_str());
+  }
+  if (const auto json = args.value("json")) {
+    writeJson(args, run, *json);
+    std::printf("wrote %s\n", json->c_str());
+  }
+}
+
+int runCompare(std::span<const std::string> words) {
+  const Arguments args(words, kOptions, "compare");
+  args.expectPositionals(2, "MOULD FORMED");
+  installLogSink();
+  planning::ComparisonParams params = comparisonParams(args);
+  const std::string method = args.value("align").value_or("none");
+  if (method != "none" && method != "best-fit")
+    throw UsageError("--align: expected none or best-fit, got " + method);
+  auto start = std::chrono::steady_clock::now();
+  CompareRun run;
+  run.mould = loadSurface(args.positionals()[0], "mould");
+  run.formed = loadSurface(args.positionals()[1], "formed");
+  run.loadSeconds = secondsSince(start);
+  std::printf("compare %s with mould %s (m = %d)\n", run.formed.name.c_str(),
+              run.mould.name.c_str(), params.resolution);
+  align(method, run);
+  start = std::chrono::steady_clock::now();
+  params.progress = consoleProgress("comparing");
+  run.result = planning::compareSurfaces(run.mould.mesh, run.formed.mesh, params);
+  endProgressLine();
+  run.compareSeconds = secondsSince(start);
+  printSummary(run);
+  writeOutputs(args, run);
+  return 0;
+}
+
+}  // namespace
+
+const Command kCompareCommand{"compare",
+                              "deviation of a formed surface from its mould: map, vectors, JSON",
+                              kHelp, &runCompare};
+
+}  // namespace ddfcam::cli

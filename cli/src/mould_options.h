@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// ddfcam-cli: helpers shared by the compare and compensate commands (number lists, surfaces,
+// text output).
+#pragma once
+
+#include <ddfcam/planning/mould_study.h>
+
+#include <chrono>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace ddfcam::cli {
+
+/// @brief @p count finite numbers separated by commas, e.g. "-0.2,0.5" for --band.
+/// @throws UsageError naming @p option if the text is not such a list.
+std::vector<double> parseNumberList(const std::string& text, std::size_t count,
+                                    const std::string& option);
+
+/// @brief Reads a surface file (io::readSurfaceFile: STL/OBJ/PLY/OFF/VTP/VTU) and prints its
+/// size on stderr, labelled @p role ("mould", "formed").
+/// @throws IoError as readSurfaceFile.
+planning::LoadedSurface loadSurface(const std::filesystem::path& path, const std::string& role);
+
+/// @brief Writes @p text to @p file (replacing it).
+/// @throws IoError naming @p command and the file if it cannot be written.
+void writeTextFile(const std::string& text, const std::filesystem::path& file,
+                   const std::string& command);
+
+/// @brief Seconds elapsed since @p start.
+double secondsSince(std::chrono::steady_clock::time_point start);
+
+}  // namespace ddfcam::cli
