@@ -40,7 +40,8 @@ constexpr const char* kHelp =
     "options:\n"
     "  --formed F [F2 ...]     formed parts of mould_0, mould_1, ... (files after TARGET)\n"
     "  --model-alpha A         isotropic springback share alpha in (0, 1)\n"
-    "  --model-axes AX,AY,AZ   springback shares along x, y, z instead (anisotropic model)\n"
+    "  --model-axes AX,AY,AZ   with --model-alpha: springback shares along x, y, z for the\n"
+    "                          forming steps (anisotropic model; alpha calibrates P)\n"
     "  --calibrate-from F0     part formed in the target itself (required with the model)\n"
     "  --lambda L              adjustment factor in (0, 10] (default 1)\n"
     "  --iterations N          model steps (default 3)\n"
@@ -168,6 +169,8 @@ int runCompensate(std::span<const std::string> words) {
   const Arguments args(words, kOptions, "compensate");
   if (args.positionals().empty()) throw UsageError("compensate: TARGET is missing");
   const bool imported = args.has("formed");
+  if (args.has("model-axes") && !args.has("model-alpha"))
+    throw UsageError("compensate: --model-axes needs --model-alpha (the calibration's share)");
   if (imported == args.has("model-alpha"))
     throw UsageError("compensate: give either --formed files or --model-alpha");
   if (!imported && args.positionals().size() != 1)

@@ -185,4 +185,19 @@ std::size_t CrustHash::memoryBytes() const {
   return bytes;
 }
 
+CrustHashParams crustHashParamsFor(const DisplacementField& ddf) {
+  double edges = 0.0, vectors = 0.0;
+  for (int f = 0; f < ddf.faceCount(); ++f) {
+    const auto& fv = ddf.faceVertices(f);
+    edges += (ddf.position(fv[1]) - ddf.position(fv[0])).norm();
+  }
+  for (int v = 0; v < ddf.vertexCount(); ++v) vectors += ddf.vector(v).norm();
+  CrustHashParams params;
+  if (edges > 0.0 && ddf.vertexCount() > 0) {
+    const double ratio = (vectors / ddf.vertexCount()) / (edges / ddf.faceCount());
+    params.cellScale = std::clamp(ratio, 1.0, 8.0);
+  }
+  return params;
+}
+
 }  // namespace ddfcam::ddf

@@ -69,20 +69,6 @@ double stageReach(const DisplacementField& field, const detail::TriangleBvh& bvh
   return std::max(1.25 * detail::largestVertexDistance(field, bvh), floor);
 }
 
-// Crusts much longer than the triangles fill many grid cells; coarser cells (about the
-// reach) keep the hash build cheap, at the price of a few more false candidates in the fill.
-CrustHashParams hashParams(const DisplacementField& field, double reach) {
-  double edges = 0.0;
-  for (int f = 0; f < field.faceCount(); ++f) {
-    const auto& fv = field.faceVertices(f);
-    edges += (field.position(fv[1]) - field.position(fv[0])).norm();
-  }
-  const double meanEdge = edges / field.faceCount();
-  CrustHashParams params;
-  if (meanEdge > 0.0) params.cellScale = std::clamp(reach / meanEdge, 1.0, 8.0);
-  return params;
-}
-
 // A stage DDF on @p support with unit @p dirs scaled to the stage's reach, heights filled
 // from @p deformed (NaN where a stubble misses it).
 DisplacementField makeStage(const SupportMesh& support, std::vector<Vec3> dirs, int m,
@@ -92,7 +78,7 @@ DisplacementField makeStage(const SupportMesh& support, std::vector<Vec3> dirs, 
   const double reach = stageReach(field, bvh, params);
   for (auto& d : dirs) d *= reach;
   field.setVectors(std::move(dirs));
-  const CrustHash hash(field, hashParams(field, reach));
+  const CrustHash hash(field, crustHashParamsFor(field));
   FillParams fill;
   const double span = 1.0 / params.maxStages;
   if (params.progress)

@@ -20,11 +20,13 @@ struct ClassBars {
   QColor brush;
 };
 
-const std::array<ClassBars, 3> kClassBars = {{
-    {planning::ToleranceClass::MaterialLeft, kMaterialLeftBarsName, QColor(70, 110, 220)},
-    {planning::ToleranceClass::InTolerance, kInToleranceBarsName, QColor(46, 170, 72)},
-    {planning::ToleranceClass::Overcut, kOvercutBarsName, QColor(215, 50, 45)},
-}};
+std::array<ClassBars, 3> classBars(const HistogramClassNames& names) {
+  return {{
+      {planning::ToleranceClass::MaterialLeft, names.above, QColor(70, 110, 220)},
+      {planning::ToleranceClass::InTolerance, names.inside, QColor(46, 170, 72)},
+      {planning::ToleranceClass::Overcut, names.below, QColor(215, 50, 45)},
+  }};
+}
 
 void removeNamed(QCustomPlot* plot, const QString& name) {
   for (int i = plot->plottableCount() - 1; i >= 0; --i)
@@ -45,10 +47,10 @@ QCPBars* addBars(QCustomPlot* plot, const ClassBars& style, double width) {
 }  // namespace
 
 void setAreaHistogramBars(QCustomPlot* plot, const planning::AreaHistogram& histogram,
-                          const planning::ToleranceBand& band) {
+                          const planning::ToleranceBand& band, const HistogramClassNames& names) {
   const double width = histogram.binWidthMm();
   double tallest = 0.0;
-  for (const ClassBars& style : kClassBars) {
+  for (const ClassBars& style : classBars(names)) {
     QCPBars* bars = addBars(plot, style, width);
     QVector<double> keys, values;
     for (std::size_t b = 0; b < histogram.areaMm2.size(); ++b) {

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
-// ddfcam gui: SetMouldStudyCommand and the size estimate of a mould study.
+// ddfcam gui: SetMouldStudyCommand, SetCompensationCommand and the size estimate of a mould
+// study.
+#include <ddfcam/error.h>
 #include <ddfcam/gui/mould_commands.h>
 
 namespace ddfcam::gui {
@@ -17,6 +19,14 @@ std::size_t surfaceBytes(const planning::LoadedSurface& surface) {
   return bytes;
 }
 
+std::size_t historyBytes(const std::optional<planning::CompensationHistory>& history) {
+  if (!history) return 0;
+  std::size_t bytes = history->target.memoryBytes();
+  for (const planning::CompensationIteration& it : history->iterations)
+    bytes += (it.mouldHeights.size() + it.formedHeights.size()) * sizeof(float);
+  return bytes;
+}
+
 }  // namespace
 
 std::size_t mouldStudyBytes(const planning::MouldStudy& study) {
@@ -29,10 +39,7 @@ std::size_t mouldStudyBytes(const planning::MouldStudy& study) {
     bytes += r.deviation.values.size() * sizeof(float);
     bytes += r.deviationVectors.size() * sizeof(ddf::Vec3);
   }
-  if (study.compensation)
-    for (const auto& iteration : study.compensation->iterations)
-      bytes += iteration.mouldHeights.size() * sizeof(float) * 3;
-  return bytes;
+  return bytes + historyBytes(study.compensation);
 }
 
 SetMouldStudyCommand::SetMouldStudyCommand(Document& document,
@@ -55,6 +62,26 @@ Changes SetMouldStudyCommand::apply(planning::Project& project) {
 
 Changes SetMouldStudyCommand::revert(planning::Project& project) {
   project.mould = before_;
+  return Change::Mould;
+}
+
+SetCompensationCommand::SetCompensationCommand(Document& document, const QString& text,
+                                               std::optional<planning::CompensationHistory> after)
+    : DocumentCommand(document, text), after_(std::move(after)) {}
+
+std::size_t SetCompensationCommand::memoryBytes() const {
+  return sizeof(*this) + historyBytes(before_) + historyBytes(after_);
+}
+
+Changes SetCompensationCommand::apply(planning::Project& project) {
+  if (!project.mould) throw InvalidInput("the project has no mould study");
+  before_ = project.mould->compensation;
+  project.mould->compensation = after_;
+  return Change::Mould;
+}
+
+Changes SetCompensationCommand::revert(planning::Project& project) {
+  project.mould->compensation = before_;
   return Change::Mould;
 }
 

@@ -2,11 +2,10 @@
 // ddfcam gui: MouldView: two linked VTK views of the mould and the formed surface.
 #include <ddfcam/gui/mould_view.h>
 
-#include "scalar_bar.h"
+#include "mould_view_scene.h"
 
 #include <ddfcam/error.h>
 #include <ddfcam/gui/adapters/colour_map.h>
-#include <ddfcam/gui/adapters/poly_data.h>
 #include <ddfcam/gui/adapters/tolerance_colours.h>
 #include <ddfcam/gui/vtk_view.h>
 
@@ -18,16 +17,10 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
-#include <vtkCellData.h>
-#include <vtkCellLocator.h>
-#include <vtkCellPicker.h>
 #include <vtkFloatArray.h>
 #include <vtkLookupTable.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
-#include <vtkPolyData.h>
-#include <vtkPolyDataMapper.h>
-#include <vtkPolyDataNormals.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 
@@ -35,9 +28,7 @@
 #include <cmath>
 
 namespace ddfcam::gui {
-namespace {
-
-constexpr double kPlainGrey[3] = {0.78, 0.78, 0.80};
+namespace mould_view_detail {
 
 // Points and triangles as they are (no feature splitting): point i is mesh vertex i, so the
 // morph slider can move the points in place.
@@ -58,17 +49,6 @@ vtkSmartPointer<vtkPolyData> rawPolyData(const ddf::TriangleMesh& mesh) {
   return data;
 }
 
-vtkSmartPointer<vtkActor> surfaceActor(vtkAlgorithmOutput* input) {
-  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-  mapper->SetInputConnection(input);
-  mapper->ScalarVisibilityOff();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(kPlainGrey[0], kPlainGrey[1], kPlainGrey[2]);
-  actor->VisibilityOff();
-  return actor;
-}
-
 vtkSmartPointer<vtkPolyDataNormals> smoothNormals() {
   auto normals = vtkSmartPointer<vtkPolyDataNormals>::New();
   // No splitting: point ids stay the mesh's vertex ids.
@@ -82,26 +62,27 @@ vtkPolyDataMapper* mapperOf(vtkActor* actor) {
   return vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
 }
 
-}  // namespace
+}  // namespace mould_view_detail
 
-/// The VTK objects of both views.
-struct MouldView::Scene {
-  vtkSmartPointer<vtkPolyData> primaryData;
-  vtkSmartPointer<vtkPolyDataNormals> primaryNormals = smoothNormals();
-  vtkSmartPointer<vtkActor> primary;
-  vtkSmartPointer<vtkPolyData> secondaryData;
-  vtkSmartPointer<vtkPolyDataNormals> secondaryNormals = smoothNormals();
-  vtkSmartPointer<vtkActor> secondary;  // in the secondary view
-  vtkSmartPointer<vtkActor> overlay;    // the same surface, translucent, in the primary view
-  vtkSmartPointer<vtkActor> highlight;
-  vtkSmartPointer<vtkActor> linesPrimary;
-  vtkSmartPointer<vtkActor> linesSecondary;
-  vtkSmartPointer<vtkScalarBarActor> primaryBar = makeScalarBar();
-  vtkSmartPointer<vtkScalarBarActor> secondaryBar = makeScalarBar();
-  ddf::TriangleMesh primaryMesh;
-  bool coloured = false;
-  mutable vtkSmartPointer<vtkCellLocator> locators[2];
-};
+namespace {
+
+using mould_view_detail::mapperOf;
+using mould_view_detail::rawPolyData;
+
+constexpr double kPlainGrey[3] = {0.78, 0.78, 0.80};
+
+vtkSmartPointer<vtkActor> surfaceActor(vtkAlgorithmOutput* input) {
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputConnection(input);
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(kPlainGrey[0], kPlainGrey[1], kPlainGrey[2]);
+  actor->VisibilityOff();
+  return actor;
+}
+
+}  // namespace
 
 MouldView::MouldView(QWidget* parent) : QWidget(parent), scene_(std::make_unique<Scene>()) {
   primary_ = new VtkView(this);
@@ -218,121 +199,6 @@ void MouldView::showPrimaryPlain(const ddf::TriangleMesh& mesh) {
   primary_->requestRender();
 }
 
-void MouldView::showSecondary(const ddf::TriangleMesh& mesh, const planning::MeshField* field) {
-  const std::size_t expected =
-      field == nullptr ? 0 : (field->perCell ? mesh.triangles.size() : mesh.vertices.size());
-  if (field != nullptr && field->values.size() != expected)
-    throw InvalidInput("mould view: field '" + field->name + "' has " +
-                       std::to_string(field->values.size()) + " values, the formed mesh needs " +
-                       std::to_string(expected));
-  const bool first = scene_->secondaryData->GetNumberOfPoints() == 0 &&
-                     scene_->primaryData->GetNumberOfPoints() == 0;
-  scene_->secondaryData = rawPolyData(mesh);
-  scene_->secondaryNormals->SetInputData(scene_->secondaryData);
-  scene_->locators[kSecondary] = nullptr;
-  vtkPolyDataMapper* mapper = mapperOf(scene_->secondary);
-  mapper->ScalarVisibilityOff();
-  scene_->secondaryBar->SetVisibility(0);
-  if (field != nullptr && !field->values.empty()) {
-    auto values = vtkSmartPointer<vtkFloatArray>::New();
-    values->SetName(field->name.c_str());
-    values->SetNumberOfValues(static_cast<vtkIdType>(field->values.size()));
-    double lo = INFINITY, hi = -INFINITY;
-    for (std::size_t i = 0; i < field->values.size(); ++i) {
-      values->SetValue(static_cast<vtkIdType>(i), field->values[i]);
-      if (std::isfinite(field->values[i])) {
-        lo = std::min(lo, static_cast<double>(field->values[i]));
-        hi = std::max(hi, static_cast<double>(field->values[i]));
-      }
-    }
-    if (!(lo <= hi)) lo = hi = 0.0;
-    const ValueRange range = defaultRange(lo, hi, false);
-    if (field->perCell) {
-      scene_->secondaryData->GetCellData()->SetScalars(values);
-      mapper->SetScalarModeToUseCellData();
-    } else {
-      scene_->secondaryData->GetPointData()->SetScalars(values);
-      mapper->SetScalarModeToUsePointData();
-    }
-    vtkSmartPointer<vtkLookupTable> table = makeLookupTable(ColourMap::Viridis, range.lo, range.hi);
-    mapper->SetLookupTable(table);
-    mapper->SetScalarRange(range.lo, range.hi);
-    mapper->ScalarVisibilityOn();
-    const std::string title = field->name + (field->unit.empty() ? "" : " [" + field->unit + "]");
-    scene_->secondaryBar->SetLookupTable(table);
-    scene_->secondaryBar->SetTitle(title.c_str());
-    scene_->secondaryBar->SetLabelFormat(scaleLabelFormat(range.lo, range.hi).c_str());
-    scene_->secondaryBar->SetVisibility(1);
-  }
-  scene_->secondary->SetVisibility(!mesh.triangles.empty());
-  scene_->overlay->SetVisibility(layout_ == Layout::Overlay && !mesh.triangles.empty());
-  if (first && !mesh.triangles.empty()) fitCameras();
-  primary_->requestRender();
-  secondary_->requestRender();
-}
-
-bool MouldView::updateSecondaryPoints(const std::vector<Eigen::Vector3d>& vertices) {
-  vtkPoints* points = scene_->secondaryData->GetPoints();
-  if (points == nullptr || points->GetNumberOfPoints() != static_cast<vtkIdType>(vertices.size()))
-    return false;
-  for (std::size_t i = 0; i < vertices.size(); ++i)
-    points->SetPoint(static_cast<vtkIdType>(i), vertices[i].data());
-  points->Modified();
-  scene_->secondaryData->Modified();
-  scene_->locators[kSecondary] = nullptr;
-  primary_->requestRender();
-  secondary_->requestRender();
-  return true;
-}
-
-void MouldView::showOverlayLines(const std::vector<std::vector<Eigen::Vector3d>>& polylines,
-                                 const Eigen::Vector3d& rgb) {
-  auto make = [&](vtkSmartPointer<vtkActor>& actor, VtkView& view) {
-    if (actor) view.renderer()->RemoveActor(actor);
-    actor = nullptr;
-    if (polylines.empty()) return;
-    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    mapper->SetInputData(toPolylinePolyData(polylines));
-    mapper->ScalarVisibilityOff();
-    actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    actor->GetProperty()->SetColor(rgb.x(), rgb.y(), rgb.z());
-    actor->GetProperty()->SetLineWidth(3.0f);
-    actor->GetProperty()->LightingOff();
-    actor->PickableOff();
-    view.renderer()->AddActor(actor);
-    view.requestRender();
-  };
-  make(scene_->linesPrimary, *primary_);
-  make(scene_->linesSecondary, *secondary_);
-  primary_->requestRender();
-  secondary_->requestRender();
-}
-
-void MouldView::showHighlightedTriangles(const std::vector<int>& triangles) {
-  if (scene_->highlight) primary_->renderer()->RemoveActor(scene_->highlight);
-  scene_->highlight = nullptr;
-  const ddf::TriangleMesh& mesh = scene_->primaryMesh;
-  ddf::TriangleMesh subset;
-  subset.vertices = mesh.vertices;
-  for (int t : triangles)
-    if (t >= 0 && t < static_cast<int>(mesh.triangles.size()))
-      subset.triangles.push_back(mesh.triangles[static_cast<std::size_t>(t)]);
-  if (!subset.triangles.empty()) {
-    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    mapper->SetInputData(toWireframePolyData(subset));
-    mapper->ScalarVisibilityOff();
-    scene_->highlight = vtkSmartPointer<vtkActor>::New();
-    scene_->highlight->SetMapper(mapper);
-    scene_->highlight->GetProperty()->SetColor(1.0, 0.0, 1.0);
-    scene_->highlight->GetProperty()->SetLineWidth(2.0f);
-    scene_->highlight->GetProperty()->LightingOff();
-    scene_->highlight->PickableOff();
-    primary_->renderer()->AddActor(scene_->highlight);
-  }
-  primary_->requestRender();
-}
-
 void MouldView::clear() {
   showOverlayLines({});
   showPrimaryPlain({});
@@ -347,47 +213,8 @@ void MouldView::fitCameras() {
   secondary_->requestRender();
 }
 
-int MouldView::secondaryPointCount() const {
-  return static_cast<int>(scene_->secondaryData->GetNumberOfPoints());
-}
-
-Eigen::Vector3d MouldView::secondaryPoint(int i) const {
-  Eigen::Vector3d p;
-  scene_->secondaryData->GetPoint(i, p.data());
-  return p;
-}
-
 bool MouldView::primaryColoured() const {
   return scene_->coloured;
-}
-
-std::optional<Eigen::Vector3d> MouldView::pickAt(int view, QPointF widgetPos) {
-  const bool primary = view == kPrimary;
-  VtkView& v = primary ? *primary_ : *secondary_;
-  vtkActor* actor = primary ? scene_->primary.Get() : scene_->secondary.Get();
-  if (!actor->GetVisibility()) return std::nullopt;
-  scene_->primaryNormals->Update();
-  scene_->secondaryNormals->Update();
-  vtkDataSet* data = mapperOf(actor)->GetInput();
-  if (data == nullptr || data->GetNumberOfCells() == 0) return std::nullopt;
-  // A locator makes the picker return the nearest hit along the ray, not the back side.
-  vtkSmartPointer<vtkCellLocator>& locator = scene_->locators[primary ? 0 : 1];
-  if (!locator || locator->GetDataSet() != data) {
-    locator = vtkSmartPointer<vtkCellLocator>::New();
-    locator->SetDataSet(data);
-    locator->BuildLocator();
-  }
-  const Eigen::Vector2d display = v.displayPosition(widgetPos);
-  auto picker = vtkSmartPointer<vtkCellPicker>::New();
-  picker->PickFromListOn();
-  picker->AddPickList(actor);
-  picker->AddLocator(locator);
-  if (!picker->Pick(display.x(), display.y(), 0.0, v.renderer()) || picker->GetCellId() < 0)
-    return std::nullopt;
-  Eigen::Vector3d point;
-  picker->GetPickPosition(point.data());
-  emit pointPicked(view, point);
-  return point;
 }
 
 bool MouldView::saveScreenshot(const QString& path) {

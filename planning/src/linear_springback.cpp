@@ -73,7 +73,7 @@ std::vector<float> anisotropicSpringback(const Eigen::Vector3d& alpha,
   });
   std::fill(field.allHeights().begin(), field.allHeights().end(), kNaN);
   if (formedMesh.triangles.empty()) return field.allHeights();
-  const ddf::CrustHash hash(field);
+  const ddf::CrustHash hash(field, ddf::crustHashParamsFor(field));
   const ddf::FillReport report = ddf::fillFromMesh(field, hash, formedMesh);
   std::vector<float> formed = field.allHeights();
   for (std::size_t l = 0; l < formed.size(); ++l)

@@ -3,6 +3,8 @@
 #include <ddfcam/error.h>
 #include <ddfcam/planning/mould_study.h>
 
+#include "bitwise_equality.h"
+
 #include <cmath>
 #include <cstring>
 #include <span>
@@ -12,44 +14,14 @@
 namespace ddfcam::planning {
 namespace {
 
-// Bitwise equality: a round trip must reproduce the bits (NaN payloads, the sign of zero).
-template <class T>
-bool sameBits(const T* a, const T* b, std::size_t count) {
-  static_assert(std::is_trivially_copyable_v<T>);
-  return count == 0 || std::memcmp(a, b, count * sizeof(T)) == 0;
-}
-
-template <class T>
-bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && sameBits(a.data(), b.data(), a.size());
-}
-
-bool sameBits(double a, double b) {
-  return sameBits(&a, &b, 1);
-}
-
-bool sameVec(const ddf::Vec3& a, const ddf::Vec3& b) {
-  return sameBits(a.data(), b.data(), 3);
-}
+using detail::sameBits;
+using detail::sameEach;
+using detail::sameOptional;
 
 bool sameVecs(const std::vector<ddf::Vec3>& a, const std::vector<ddf::Vec3>& b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i)
-    if (!sameVec(a[i], b[i])) return false;
-  return true;
-}
-
-template <class T, class Same>
-bool sameOptional(const std::optional<T>& a, const std::optional<T>& b, Same same) {
-  if (a.has_value() != b.has_value()) return false;
-  return !a || same(*a, *b);
-}
-
-template <class T, class Same>
-bool sameEach(const std::vector<T>& a, const std::vector<T>& b, Same same) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (!same(a[i], b[i])) return false;
+    if (!sameBits(a[i], b[i])) return false;
   return true;
 }
 
@@ -68,8 +40,8 @@ bool sameAlignment(const SurfaceAlignmentRecord& a, const SurfaceAlignmentRecord
       !sameBits(a.rmsMm, b.rmsMm) || a.pointPairs.size() != b.pointPairs.size())
     return false;
   for (std::size_t i = 0; i < a.pointPairs.size(); ++i)
-    if (!sameVec(a.pointPairs[i][0], b.pointPairs[i][0]) ||
-        !sameVec(a.pointPairs[i][1], b.pointPairs[i][1]))
+    if (!sameBits(a.pointPairs[i][0], b.pointPairs[i][0]) ||
+        !sameBits(a.pointPairs[i][1], b.pointPairs[i][1]))
       return false;
   return true;
 }
@@ -207,7 +179,8 @@ bool displacementFieldsEqual(const ddf::DisplacementField& a, const ddf::Displac
   for (int f = 0; f < a.faceCount(); ++f)
     if (a.faceVertices(f) != b.faceVertices(f)) return false;
   for (int v = 0; v < a.vertexCount(); ++v)
-    if (!sameVec(a.position(v), b.position(v)) || !sameVec(a.vector(v), b.vector(v))) return false;
+    if (!sameBits(a.position(v), b.position(v)) || !sameBits(a.vector(v), b.vector(v)))
+      return false;
   return sameBits(a.allHeights(), b.allHeights());
 }
 

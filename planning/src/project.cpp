@@ -3,6 +3,8 @@
 #include <ddfcam/error.h>
 #include <ddfcam/planning/project.h>
 
+#include "bitwise_equality.h"
+
 #include <cmath>
 #include <cstring>
 #include <sstream>
@@ -11,6 +13,10 @@
 
 namespace ddfcam::planning {
 namespace {
+
+using detail::sameBits;
+using detail::sameEach;
+using detail::sameOptional;
 
 std::string quoted(const std::string& kind, const std::string& name) {
   return kind + " '" + name + "'";
@@ -138,47 +144,12 @@ void checkPartItems(const Project& project) {
   }
 }
 
-// Bitwise equality of contiguous trivially copyable values: NaN equals NaN with the same
-// payload, while 0.0 and -0.0 differ (a round trip must reproduce the bits).
-template <class T>
-bool sameBits(const T* a, const T* b, std::size_t count) {
-  static_assert(std::is_trivially_copyable_v<T>);
-  return count == 0 || std::memcmp(a, b, count * sizeof(T)) == 0;
-}
-
-template <class T>
-bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && sameBits(a.data(), b.data(), a.size());
-}
-
-bool sameBits(double a, double b) {
-  return sameBits(&a, &b, 1);
-}
-
-bool sameBits(const ddf::Vec3& a, const ddf::Vec3& b) {
-  return sameBits(a.data(), b.data(), 3);
-}
-
 bool sameMesh(const ddf::TriangleMesh& a, const ddf::TriangleMesh& b) {
   return triangleMeshesEqual(a, b);
 }
 
 bool sameDdf(const ddf::DisplacementField& a, const ddf::DisplacementField& b) {
   return displacementFieldsEqual(a, b);
-}
-
-template <class T, class Same>
-bool sameOptional(const std::optional<T>& a, const std::optional<T>& b, Same same) {
-  if (a.has_value() != b.has_value()) return false;
-  return !a || same(*a, *b);
-}
-
-template <class T, class Same>
-bool sameEach(const std::vector<T>& a, const std::vector<T>& b, Same same) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (!same(a[i], b[i])) return false;
-  return true;
 }
 
 bool sameTool(const Tool& a, const Tool& b) {

@@ -64,6 +64,13 @@ std::string boxText(const Vec3& lo, const Vec3& hi) {
       " triangles, " + boxText(box[0], box[1]) + ")");
 }
 
+// The mould surface itself: heights 0, so raster normals and areas are the mould's.
+ddf::DisplacementField flatMould(const ddf::DisplacementField& mouldDdf) {
+  ddf::DisplacementField flat = mouldDdf;
+  std::fill(flat.allHeights().begin(), flat.allHeights().end(), 0.0f);
+  return flat;
+}
+
 // Deviation vectors q - g and signed deviations (q - g) . n per raster point copy.
 void fillDeviations(const ddf::DisplacementField& flat, const std::vector<Vec3>& deformedPoints,
                     bool flipNormal, SurfaceComparison& out) {
@@ -121,9 +128,7 @@ SurfaceComparison compareSurfaces(const ddf::DisplacementField& mouldDdf,
   if (params.progress) sequenceParams.progress = subProgress(params.progress, 0.0, 0.95);
   SurfaceComparison out;
   out.sequence = ddf::buildDeformationSequence(mouldDdf, deformed, sequenceParams);
-  // The mould surface itself: heights 0, so raster normals and areas are the mould's.
-  ddf::DisplacementField flat = mouldDdf;
-  std::fill(flat.allHeights().begin(), flat.allHeights().end(), 0.0f);
+  const ddf::DisplacementField flat = flatMould(mouldDdf);
   fillDeviations(flat, out.sequence.deformedPoints, params.flipNormal, out);
   if (std::none_of(out.deviation.values.begin(), out.deviation.values.end(),
                    [](float x) { return std::isfinite(x); }))
@@ -132,6 +137,18 @@ SurfaceComparison compareSurfaces(const ddf::DisplacementField& mouldDdf,
   out.statistics = errorStatistics(out.deviation, flat, params.band);
   reportProgress(params.progress, 1.0);
   return out;
+}
+
+void updateComparisonBand(SurfaceComparison& comparison, const ToleranceBand& band,
+                          bool reverseSign) {
+  validateToleranceBand(band);
+  if (comparison.sequence.stages.empty())
+    throw InvalidInput("updateComparisonBand: the comparison has no stages");
+  if (reverseSign)
+    for (float& value : comparison.deviation.values) value = -value;
+  comparison.band = band;
+  comparison.statistics =
+      errorStatistics(comparison.deviation, flatMould(comparison.sequence.stages[0].ddf), band);
 }
 
 ScalarField crossingRegionField(const SurfaceComparison& comparison) {

@@ -72,6 +72,7 @@ class MouldPanelTest : public ddfcam::test::WorkbenchTest {
   void initTestCase();
   void init();
   void statisticsMatchAnIndependentComparison();
+  void bandAndFlipReevaluateTheComparison();
   void morphSliderMovesTheFormedSide();
   void sectionByTwoClicksPlotsBothCurves();
   void undoAndRedoTheComparison();
@@ -138,6 +139,34 @@ void MouldPanelTest::statisticsMatchAnIndependentComparison() {
   QVERIFY(plot != nullptr);
   QVERIFY(plot->plottableCount() >= 2);  // bars of at least two tolerance classes
   QCOMPARE(f_.window->plots().currentPlotName(), MouldPanel::kHistogramTab);
+}
+
+// Oracle: the ramp -0.2 + 0.8 x / 40 lies within +-0.1 for x in [5, 15], a quarter of the plate;
+// reversed, it runs from 0.2 down to -0.6. Each of the two band edges may misplace up to one
+// raster spacing (4 mm / 3 at m = 4) of the 40 mm: 6.7 % of the area.
+void MouldPanelTest::bandAndFlipReevaluateTheComparison() {
+  loadAndCompare();
+  QCustomPlot* plot = f_.window->plots().findPlot(MouldPanel::kHistogramTab);
+  QStringList names;
+  for (int i = 0; i < plot->plottableCount(); ++i) names << plot->plottable(i)->name();
+  QVERIFY2(names.contains("short of the mould") && names.contains("beyond the mould"),
+           qPrintable(names.join(", ")));
+  panel()->setToleranceBand({-0.1, 0.1});
+  const auto& stats = [this]() -> const ddfcam::planning::ErrorStatistics& {
+    return project().mould->result->statistics;
+  };
+  const double bound = 2.0 * (kSizeMm / kCells / 3.0) / kSizeMm * 100.0;
+  QVERIFY2(std::abs(stats().inTolerancePercent - 25.0) <= bound,
+           qPrintable(QString::number(stats().inTolerancePercent)));
+  QVERIFY(panel()->statisticsText().contains(QString::number(stats().inTolerancePercent, 'f', 1)));
+  panel()->setFlipNormal(true);
+  QVERIFY(std::abs(stats().maxMm - 0.2) < 1e-3 && std::abs(stats().minMm + 0.6) < 1e-3);
+  QVERIFY(std::abs(stats().inTolerancePercent - 25.0) <= bound);
+  f_.window->document().undoStack()->undo();
+  QVERIFY(std::abs(stats().maxMm - 0.6) < 1e-3);
+  f_.window->document().undoStack()->undo();
+  QCOMPARE(project().mould->result->band.upperMm, 0.5);
+  waitOk();
 }
 
 void MouldPanelTest::morphSliderMovesTheFormedSide() {

@@ -68,6 +68,27 @@ TEST(CliCompensate, LinearModelFollowsTheAlphaLaw) {
                 0.01);
 }
 
+// Oracle: on the flat target the stubbles and every deviation are vertical, so of the per-axis
+// shares only the z share acts, and the model must follow that share's alpha law (up to the
+// resampling of the formed points onto the stubbles).
+TEST(CliCompensate, PerAxisModelActsThroughTheShareAlongTheDeviation) {
+  const Sheets s;
+  const CliRun run = test::cli(
+      s.dir, "compensate",
+      {s.target.string(), "--model-alpha", "0.3", "--model-axes", "0.1,0.2,0.5", "--calibrate-from",
+       s.formed(kAmplitude, "f0.stl").string(), "--iterations", "2", "--resolution", "5",
+       "--out-dir", (s.dir / "m").string(), "--json", (s.dir / "c.json").string()});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const nlohmann::json it = convergence(s);
+  ASSERT_EQ(it.size(), 3u);
+  // P is calibrated with alpha = 0.3 (P - T = s_0 / 0.3); the model then forms every mould,
+  // the target included, with the z share 0.5: s_0' = 0.5 (P - T), and each step halves it.
+  const double rms0 = it[0]["rms_mm"].get<double>();
+  EXPECT_NEAR(rms0, 0.5 / 0.3 * kAmplitude / std::sqrt(2.0), 0.02 * rms0);
+  EXPECT_NEAR(it[1]["rms_mm"].get<double>() / rms0, 0.5, 0.01);
+  EXPECT_NEAR(it[2]["rms_mm"].get<double>() / it[1]["rms_mm"].get<double>(), 0.5, 0.01);
+}
+
 TEST(CliCompensate, LambdaOneOverOneMinusAlphaConvergesInOneStep) {
   const Sheets s;
   const CliRun run = test::cli(s.dir, "compensate",

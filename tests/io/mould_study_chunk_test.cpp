@@ -98,8 +98,9 @@ TEST(MouldStudyChunk, DamagedPayloadNamesTheChunk) {
   ASSERT_NE(at, std::string::npos);
 
   // The flag after the mould surface: name, path, mesh (16 + 4 x 24 + 2 x 12), 1 field.
-  const std::size_t mouldSurface =
-      (4 + 9) + (4 + 14) + 16 + 96 + 24 + 8 + (4 + 9) + (4 + 2) + 1 + 8 + 16;
+  const planning::LoadedSurface& mould = project.mould->mould;
+  const std::size_t mouldSurface = (4 + mould.name.size()) + (4 + mould.sourcePath.size()) + 16 +
+                                   96 + 24 + 8 + (4 + 9) + (4 + 2) + 1 + 8 + 16;
   std::string flag = bytes;
   ASSERT_EQ(flag[at + mouldSurface], '\1');
   flag[at + mouldSurface] = '\7';

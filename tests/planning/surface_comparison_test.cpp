@@ -90,6 +90,25 @@ TEST(SurfaceComparison, SineSheetStatisticsMatchAnalyticArea) {
   EXPECT_TRUE(cmp.sequence.crossingFaces.empty());
 }
 
+// Oracle: a full recomputation with the new band and orientation.
+TEST(SurfaceComparison, NewBandAndFlippedNormalEqualAFullRecomputation) {
+  SurfaceComparison cmp = compareSurfaces(flatMould(), sineSheet(), sineParams());
+  ComparisonParams other = sineParams();
+  other.band = {-0.1, 0.9};
+  other.flipNormal = true;
+  const SurfaceComparison full = compareSurfaces(flatMould(), sineSheet(), other);
+  updateComparisonBand(cmp, other.band, true);
+  // A sine spends (asin(0.9) + asin(0.1)) / pi of its period in [-0.1, 0.9] (33.3 % in +-0.5).
+  const double share = 100.0 * (std::asin(0.9) + std::asin(0.1)) / std::numbers::pi;
+  EXPECT_NEAR(cmp.statistics.inTolerancePercent, share, 1.7);
+  EXPECT_EQ(cmp.deviation, full.deviation);
+  EXPECT_EQ(cmp.band.lowerMm, -0.1);
+  EXPECT_EQ(cmp.statistics.inTolerancePercent, full.statistics.inTolerancePercent);
+  EXPECT_EQ(cmp.statistics.overcutPercent, full.statistics.overcutPercent);
+  EXPECT_EQ(cmp.statistics.sigmaMm, full.statistics.sigmaMm);
+  EXPECT_THROW(updateComparisonBand(cmp, {0.1, 0.2}, false), InvalidInput);
+}
+
 TEST(SurfaceComparison, SineSheetDeviationIsHeightAndVectorsAreVertical) {
   const SurfaceComparison cmp = compareSurfaces(flatMould(), sineSheet(), sineParams());
   ASSERT_EQ(cmp.deviationVectors.size(), cmp.deviation.values.size());

@@ -184,44 +184,52 @@ bool MouldPanel::applyAlignment() {
   runUserAction(workbench().reportError, tr("Align formed surface"), [&] {
     const auto& current = workbench().document.project().mould;
     if (!current || !current->formed) throw InvalidInput("load the mould and the formed surface");
-    planning::MouldStudy study = *current;
-    const ddf::TriangleMesh file = fileFrameMesh(study);
     const planning::AlignmentMethod method = alignmentMethod();
     if (method != planning::AlignmentMethod::BestFit) {
-      planning::RigidAlignment fit;
-      if (method == planning::AlignmentMethod::PointPairs)
-        fit = planning::alignByPointPairs(pairs_);
-      study.formed->mesh = file.transformed(fit.transform);
-      study.alignment = {method, planning::toRowMajor(fit.transform), fit.rmsMm,
-                         method == planning::AlignmentMethod::PointPairs
-                             ? pairs_
-                             : std::vector<std::array<Eigen::Vector3d, 2>>{}};
-      study.result.reset();
-      pushStudy(std::move(study), tr("Align formed surface"));
+      applyDirectAlignment(*current, method);
       done = true;
       return;
     }
-    auto mould = std::make_shared<const ddf::TriangleMesh>(study.mould.mesh);
-    auto moving = std::make_shared<const ddf::TriangleMesh>(file);
-    MouldPanel* self = this;
-    done = workbench().jobs.start(tr("Best fit"), [=](const ProgressCallback& progress) {
-      planning::BestFitParams params;
-      params.progress = progress;
-      const planning::RigidAlignment fit = planning::alignBestFit(*moving, *mould, params);
-      return std::function<void()>([self, fit, moving] {
-        const auto& now = self->workbench().document.project().mould;
-        if (!now || !now->formed) return;
-        planning::MouldStudy aligned = *now;
-        aligned.formed->mesh = moving->transformed(fit.transform);
-        aligned.alignment = {
-            planning::AlignmentMethod::BestFit, planning::toRowMajor(fit.transform), fit.rmsMm, {}};
-        aligned.result.reset();
-        self->pushStudy(std::move(aligned), tr("Best-fit alignment"));
-      });
-    });
+    done = startBestFit(*current);
     if (!done) throw InvalidInput("another job is running; wait for it or cancel it first");
   });
   return done;
+}
+
+// None and PointPairs are immediate: one undoable edit, no job.
+void MouldPanel::applyDirectAlignment(planning::MouldStudy study,
+                                      planning::AlignmentMethod method) {
+  const ddf::TriangleMesh file = fileFrameMesh(study);
+  planning::RigidAlignment fit;
+  if (method == planning::AlignmentMethod::PointPairs) fit = planning::alignByPointPairs(pairs_);
+  study.formed->mesh = file.transformed(fit.transform);
+  study.alignment = {method, planning::toRowMajor(fit.transform), fit.rmsMm,
+                     method == planning::AlignmentMethod::PointPairs
+                         ? pairs_
+                         : std::vector<std::array<Eigen::Vector3d, 2>>{}};
+  study.result.reset();
+  pushStudy(std::move(study), tr("Align formed surface"));
+}
+
+bool MouldPanel::startBestFit(const planning::MouldStudy& study) {
+  auto mould = std::make_shared<const ddf::TriangleMesh>(study.mould.mesh);
+  auto moving = std::make_shared<const ddf::TriangleMesh>(fileFrameMesh(study));
+  MouldPanel* self = this;
+  return workbench().jobs.start(tr("Best fit"), [=](const ProgressCallback& progress) {
+    planning::BestFitParams params;
+    params.progress = progress;
+    const planning::RigidAlignment fit = planning::alignBestFit(*moving, *mould, params);
+    return std::function<void()>([self, fit, moving] {
+      const auto& now = self->workbench().document.project().mould;
+      if (!now || !now->formed) return;
+      planning::MouldStudy aligned = *now;
+      aligned.formed->mesh = moving->transformed(fit.transform);
+      aligned.alignment = {
+          planning::AlignmentMethod::BestFit, planning::toRowMajor(fit.transform), fit.rmsMm, {}};
+      aligned.result.reset();
+      self->pushStudy(std::move(aligned), tr("Best-fit alignment"));
+    });
+  });
 }
 
 QString MouldPanel::alignmentText() const {

@@ -1,19 +1,15 @@
 // SPDX-License-Identifier: MIT
-// ddfcam gui: MouldPanel: the comparison job, statistics, histogram, morph slider, sections,
-// exports.
+// ddfcam gui: MouldPanel: the comparison job, statistics, histogram and the band settings.
 #include <ddfcam/error.h>
 #include <ddfcam/gui/adapters/error_plots.h>
-#include <ddfcam/gui/adapters/section_plot.h>
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/mould_view.h>
 #include <ddfcam/gui/panels/mould_panel.h>
 #include <ddfcam/gui/plot_dock.h>
-#include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/io/vtp_writer.h>
-#include <ddfcam/planning/cross_section.h>
 #include <ddfcam/planning/surface_comparison.h>
+
+#include <qcustomplot.h>
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -22,13 +18,9 @@
 #include <QGroupBox>
 #include <QLabel>
 #include <QPushButton>
-#include <QSignalBlocker>
 #include <QSlider>
 #include <QSpinBox>
 #include <QVBoxLayout>
-
-#include <vtkCamera.h>
-#include <vtkRenderer.h>
 
 #include <algorithm>
 #include <cmath>
@@ -92,9 +84,13 @@ void MouldPanel::buildOutputs() {
   form->addRow(exportDev);
   layout()->addWidget(group);
   connect(compare_, &QPushButton::clicked, this, [this] { compare(); });
+  for (QDoubleSpinBox* spin : {lower_, upper_})
+    connect(spin, &QDoubleSpinBox::editingFinished, this, [this] { applyBandToResult(); });
+  connect(flip_, &QCheckBox::clicked, this, [this] { applyBandToResult(); });
   connect(section, &QPushButton::clicked, this, [this] { setPickMode(PickMode::SectionStart); });
   connect(exportDev, &QPushButton::clicked, this, [this] {
-    const QString path = ask(tr("Export deviation"), tr("VTK PolyData (*.vtp)"), true);
+    const QString path = ask(tr("Export deviation"),
+                             tr("VTK PolyData (*.vtp);;CSV points and vectors (*.csv)"), true);
     if (!path.isEmpty()) exportDeviation(path);
   });
 }
@@ -141,10 +137,12 @@ void MouldPanel::setToleranceBand(const planning::ToleranceBand& band) {
   planning::validateToleranceBand(band);
   lower_->setValue(band.lowerMm);
   upper_->setValue(band.upperMm);
+  applyBandToResult();
 }
 
 void MouldPanel::setFlipNormal(bool flip) {
   flip_->setChecked(flip);
+  applyBandToResult();
 }
 
 planning::ComparisonParams MouldPanel::comparisonParams() const {
@@ -224,6 +222,15 @@ void MouldPanel::showStudy() {
 void MouldPanel::showResult(const planning::MouldStudy& study) {
   const planning::SurfaceComparison& r = *study.result;
   const ddf::DisplacementField& ddf = r.sequence.stages.front().ddf;
+  indexRasterCopies(ddf);
+  showResultText(r);
+  runUserAction(workbench().reportError, tr("Deviation histogram"), [&] { showHistogram(r, ddf); });
+  if (MouldView* view = workbench().mouldView) showDeviation(*view, r, ddf);
+}
+
+// Each raster vertex takes the value of the first copy of its point (a point on a shared edge
+// or corner has one copy per face).
+void MouldPanel::indexRasterCopies(const ddf::DisplacementField& ddf) {
   raster_ = ddf::extractRasterMesh(ddf);
   vertexCopy_.resize(raster_->vertexPoint.size());
   for (std::size_t v = 0; v < vertexCopy_.size(); ++v) {
@@ -233,6 +240,9 @@ void MouldPanel::showResult(const planning::MouldStudy& study) {
       first = false;
     });
   }
+}
+
+void MouldPanel::showResultText(const planning::SurfaceComparison& r) {
   const planning::ErrorStatistics& s = r.statistics;
   stats_->setText(tr("max %1, min %2\nmean %3, sigma %4\nwithin %5 .. %6: %7 %\narea %8 mm²")
                       .arg(mm(s.maxMm), mm(s.minMm), mm(s.meanMm), mm(s.sigmaMm),
@@ -249,16 +259,24 @@ void MouldPanel::showResult(const planning::MouldStudy& study) {
                 .arg(seq.stages.size())
                 .arg(seq.unresolvedFaces.size())
                 .arg(seq.missingPoints));
-  runUserAction(workbench().reportError, tr("Deviation histogram"), [&] {
-    const double lo = std::min(s.minMm, 2.0 * r.band.lowerMm);
-    double hi = std::max(s.maxMm, 2.0 * r.band.upperMm);
-    if (!(hi > lo)) hi = lo + 1e-3;
-    const planning::AreaHistogram histogram =
-        planning::errorHistogram(r.deviation, ddf, kHistogramBins, lo, hi);
-    setAreaHistogramBars(workbench().plots.plot(kHistogramTab), histogram, r.band);
-  });
-  MouldView* view = workbench().mouldView;
-  if (view == nullptr) return;
+}
+
+void MouldPanel::showHistogram(const planning::SurfaceComparison& r,
+                               const ddf::DisplacementField& ddf) {
+  const planning::ErrorStatistics& s = r.statistics;
+  const double lo = std::min(s.minMm, 2.0 * r.band.lowerMm);
+  double hi = std::max(s.maxMm, 2.0 * r.band.upperMm);
+  if (!(hi > lo)) hi = lo + 1e-3;
+  const planning::AreaHistogram histogram =
+      planning::errorHistogram(r.deviation, ddf, kHistogramBins, lo, hi);
+  QCustomPlot* plot = workbench().plots.plot(kHistogramTab);
+  setAreaHistogramBars(plot, histogram, r.band,
+                       {kShortOfMouldBarsName, kInToleranceBarsName, kBeyondMouldBarsName});
+}
+
+void MouldPanel::showDeviation(MouldView& view, const planning::SurfaceComparison& r,
+                               const ddf::DisplacementField& ddf) {
+  const auto& seq = r.sequence;
   const std::vector<ddf::Vec3> mouldPoints = ddf::morphPositions(seq, 0.0);
   ddf::TriangleMesh mesh = raster_->mesh;
   std::vector<float> values(vertexCopy_.size());
@@ -266,12 +284,12 @@ void MouldPanel::showResult(const planning::MouldStudy& study) {
     mesh.vertices[v] = mouldPoints[vertexCopy_[v]];
     values[v] = r.deviation.values[vertexCopy_[v]];
   }
-  view->showPrimary(mesh, std::move(values), r.band);
+  view.showPrimary(mesh, std::move(values), r.band);
   const int perFace = (ddf.resolution() - 1) * (ddf.resolution() - 1);
   std::vector<int> triangles;
   for (int f : seq.crossingFaces)
     for (int t = 0; t < perFace; ++t) triangles.push_back(f * perFace + t);
-  view->showHighlightedTriangles(triangles);
+  view.showHighlightedTriangles(triangles);
 }
 
 QString MouldPanel::statisticsText() const {
@@ -282,97 +300,23 @@ QString MouldPanel::crossingText() const {
   return crossing_->text();
 }
 
-double MouldPanel::morphLambda() const {
-  return morph_->value() / 100.0;
-}
-
-bool MouldPanel::setMorphLambda(double lambda) {
-  if (!raster_) return false;
-  const int value = static_cast<int>(std::lround(std::clamp(lambda, -1.0, 2.0) * 100.0));
-  morphShown_ = true;
-  if (value == morph_->value())
-    showMorph();
-  else
-    morph_->setValue(value);
-  return true;
-}
-
-std::optional<ddf::TriangleMesh> MouldPanel::morphSurface() const {
-  const auto& study = workbench().document.project().mould;
-  if (!raster_ || !study || !study->result) return std::nullopt;
-  const auto& seq = study->result->sequence;
-  const std::vector<ddf::Vec3> moved = ddf::morphPositions(seq, morphLambda());
-  const std::vector<ddf::Vec3> mould = ddf::morphPositions(seq, 0.0);
-  ddf::TriangleMesh mesh = raster_->mesh;
-  for (std::size_t v = 0; v < vertexCopy_.size(); ++v) {
-    const ddf::Vec3& p = moved[vertexCopy_[v]];
-    // A stubble that missed the formed surface has no path: that point stays on the mould.
-    mesh.vertices[v] = p.allFinite() ? p : mould[vertexCopy_[v]];
-  }
-  return mesh;
-}
-
-void MouldPanel::showMorph() {
-  morphLabel_->setText(tr("lambda = %1 (0 = mould, 1 = formed)").arg(morphLambda(), 0, 'f', 2));
-  MouldView* view = workbench().mouldView;
-  const std::optional<ddf::TriangleMesh> mesh = morphSurface();
-  if (!view || !mesh) return;
-  if (view->secondaryPointCount() != static_cast<int>(mesh->vertices.size()) ||
-      !view->updateSecondaryPoints(mesh->vertices))
-    view->showSecondary(*mesh);
-}
-
-bool MouldPanel::exportMorphSurface(const QString& path) {
-  return runUserAction(workbench().reportError, tr("Export morph surface"), [&] {
-    const std::optional<ddf::TriangleMesh> mesh = morphSurface();
-    if (!mesh) throw InvalidInput("compare the surfaces first: the morph runs on the comparison");
-    io::writeMesh(*mesh, path.toStdString());
-  });
-}
-
-bool MouldPanel::exportDeviation(const QString& path) {
-  return runUserAction(workbench().reportError, tr("Export deviation"), [&] {
+// The deformed points do not depend on the band or the normal's orientation, so a new band
+// re-evaluates the stored comparison instead of running it again.
+void MouldPanel::applyBandToResult() {
+  runUserAction(workbench().reportError, tr("Tolerance band"), [&] {
     const auto& study = workbench().document.project().mould;
-    if (!raster_ || !study || !study->result) throw InvalidInput("compare the surfaces first");
-    if (!path.endsWith(QStringLiteral(".vtp"), Qt::CaseInsensitive))
-      throw InvalidInput("export the deviation as .vtp: '" + path.toStdString() + "'");
-    const planning::SurfaceComparison& r = *study->result;
-    const std::vector<ddf::Vec3> mould = ddf::morphPositions(r.sequence, 0.0);
-    ddf::TriangleMesh mesh = raster_->mesh;
-    io::VtpPointData data;
-    data.scalars.push_back({"deviation", {}});
-    data.vectors.push_back({"deviation_vector", {}});
-    for (std::size_t v = 0; v < vertexCopy_.size(); ++v) {
-      mesh.vertices[v] = mould[vertexCopy_[v]];
-      data.scalars[0].values.push_back(r.deviation.values[vertexCopy_[v]]);
-      data.vectors[0].values.push_back(r.deviationVectors[vertexCopy_[v]]);
-    }
-    io::writeVtp(mesh, data, path.toStdString());
-  });
-}
-
-bool MouldPanel::drawSection(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return runUserAction(workbench().reportError, tr("Draw section"), [&] {
-    const auto& study = workbench().document.project().mould;
-    if (!study || !study->formed) throw InvalidInput("load the mould and the formed surface");
-    Eigen::Vector3d direction(0.0, 0.0, -1.0);
-    if (MouldView* view = workbench().mouldView)
-      view->primaryView().renderer()->GetActiveCamera()->GetDirectionOfProjection(direction.data());
-    const planning::SectionPlane plane = planning::sectionPlaneFromView(a, b, direction);
-    const auto mouldCurves = planning::sectionCurves(study->mould.mesh, plane);
-    const auto formedCurves = planning::sectionCurves(study->formed->mesh, plane);
-    QCustomPlot* plot = workbench().plots.plot(kSectionTab);
-    setSectionCurve(plot, tr("mould"), mouldCurves, QColor(40, 40, 40));
-    setSectionCurve(plot, tr("formed"), formedCurves, QColor(220, 120, 0));
-    workbench().plots.showPlot(kSectionTab);
-    std::vector<std::vector<Eigen::Vector3d>> lines{{a, b}};
-    for (const auto* curves : {&mouldCurves, &formedCurves})
-      for (const auto& curve : *curves) {
-        std::vector<Eigen::Vector3d> line;
-        for (const Eigen::Vector2d& st : curve) line.push_back(planning::sectionToWorld(plane, st));
-        lines.push_back(std::move(line));
-      }
-    if (MouldView* view = workbench().mouldView) view->showOverlayLines(lines);
+    if (!study || !study->result) return;
+    const planning::ToleranceBand band{lower_->value(), upper_->value()};
+    const bool flip = flip_->isChecked();
+    const planning::ToleranceBand& now = study->result->band;
+    if (band.lowerMm == now.lowerMm && band.upperMm == now.upperMm &&
+        flip == study->comparison.flipNormal)
+      return;
+    planning::MouldStudy after = *study;
+    planning::updateComparisonBand(*after.result, band, flip != after.comparison.flipNormal);
+    after.comparison.band = band;
+    after.comparison.flipNormal = flip;
+    pushStudy(std::move(after), tr("Change tolerance band"));
   });
 }
 

@@ -68,6 +68,16 @@ QGroupBox* MouldToolsPanel::buildCompensation() {
   auto* group = new QGroupBox(tr("Compensation"), this);
   group->setObjectName("compensationGroup");
   auto* box = new QVBoxLayout(group);
+  box->addLayout(buildCompensationForm(group));
+  box->addWidget(modelLabel_);
+  buildCompensationButtons(group, box);
+  buildHistoryTable(group);
+  box->addWidget(table_);
+  connectCompensation();
+  return group;
+}
+
+QFormLayout* MouldToolsPanel::buildCompensationForm(QGroupBox* group) {
   auto* form = new QFormLayout;
   source_ = new QComboBox(group);
   source_->setObjectName("responseSourceCombo");
@@ -94,8 +104,10 @@ QGroupBox* MouldToolsPanel::buildCompensation() {
   form->addRow(tr("lambda"), lambda_);
   form->addRow(tr("alpha"), alpha_);
   form->addRow(perAxis_, axes);
-  box->addLayout(form);
-  box->addWidget(modelLabel_);
+  return form;
+}
+
+void MouldToolsPanel::buildCompensationButtons(QGroupBox* group, QBoxLayout* box) {
   start_ = button(group, tr("Start from target"), "startCompensationButton");
   calibrate_ = button(group, tr("Calibrate model"), "calibrateModelButton");
   import_ = button(group, tr("Import formed surface..."), "importFormedButton");
@@ -112,6 +124,9 @@ QGroupBox* MouldToolsPanel::buildCompensation() {
   row2->addWidget(export_);
   box->addLayout(row1);
   box->addLayout(row2);
+}
+
+void MouldToolsPanel::buildHistoryTable(QGroupBox* group) {
   table_ = new QTableWidget(0, 4, group);
   table_->setObjectName("compensationHistoryTable");
   table_->setHorizontalHeaderLabels({tr("iteration"), tr("source"), tr("max mm"), tr("RMS mm")});
@@ -120,9 +135,10 @@ QGroupBox* MouldToolsPanel::buildCompensation() {
   table_->setSelectionMode(QAbstractItemView::SingleSelection);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->setMinimumHeight(140);
-  box->addWidget(table_);
-  connect(table_, &QTableWidget::cellClicked, this, [this](int row, int) { showMould(row); });
+}
 
+void MouldToolsPanel::connectCompensation() {
+  connect(table_, &QTableWidget::cellClicked, this, [this](int row, int) { showMould(row); });
   connect(start_, &QPushButton::clicked, this, [this] { startCompensation(); });
   connect(calibrate_, &QPushButton::clicked, this, [this] { calibrateLinearModel(); });
   connect(evaluate_, &QPushButton::clicked, this, [this] { evaluateLastMould(); });
@@ -137,7 +153,6 @@ QGroupBox* MouldToolsPanel::buildCompensation() {
         askSavePath(tr("Export mould"), tr("STL (*.stl);;OBJ (*.obj);;PLY (*.ply)"));
     if (!path.isEmpty()) exportMould(row, path);
   });
-  return group;
 }
 
 void MouldToolsPanel::setResponseSource(ResponseSource source) {

@@ -45,6 +45,28 @@ const ddf::DeformationSequence& studySequence(const planning::Project& project) 
 QGroupBox* MouldToolsPanel::buildBlending() {
   auto* group = new QGroupBox(tr("Blending f = s + d h v"), this);
   group->setObjectName("blendingGroup");
+  QFormLayout* form = buildBlendForm(group);
+  blendLabel_ = new QLabel(group);
+  blendLabel_->setObjectName("blendLabel");
+  auto* show = new QPushButton(tr("Show blended surface"), group);
+  show->setObjectName("showBlendedButton");
+  auto* clearPaint = new QPushButton(tr("Clear painted region"), group);
+  clearPaint->setObjectName("clearPaintButton");
+  auto* box = new QVBoxLayout(group);
+  box->addLayout(form);
+  box->addWidget(blendLabel_);
+  box->addWidget(show);
+  box->addWidget(clearPaint);
+  connect(show, &QPushButton::clicked, this, [this] { showBlended(); });
+  connect(clearPaint, &QPushButton::clicked, this, [this] {
+    blend_.faces.clear();
+    refreshBlendWidgets();
+  });
+  refreshBlendWidgets();
+  return group;
+}
+
+QFormLayout* MouldToolsPanel::buildBlendForm(QGroupBox* group) {
   const planning::BlendParams defaults;
   blendKind_ = new QComboBox(group);
   blendKind_->setObjectName("blendKindCombo");
@@ -62,12 +84,6 @@ QGroupBox* MouldToolsPanel::buildBlending() {
   pickMode_->addItem(tr("nothing"), static_cast<int>(BlendPickMode::None));
   pickMode_->addItem(tr("sets the radial centre"), static_cast<int>(BlendPickMode::PickCentre));
   pickMode_->addItem(tr("paints the region"), static_cast<int>(BlendPickMode::PaintRegion));
-  blendLabel_ = new QLabel(group);
-  blendLabel_->setObjectName("blendLabel");
-  auto* show = new QPushButton(tr("Show blended surface"), group);
-  show->setObjectName("showBlendedButton");
-  auto* clearPaint = new QPushButton(tr("Clear painted region"), group);
-  clearPaint->setObjectName("clearPaintButton");
   auto* form = new QFormLayout;
   form->addRow(tr("Function d"), blendKind_);
   form->addRow(tr("Strength"), blendValue_);
@@ -76,18 +92,7 @@ QGroupBox* MouldToolsPanel::buildBlending() {
   form->addRow(tr("Boundary width"), blendBoundary_);
   form->addRow(tr("Brush radius"), brush_);
   form->addRow(tr("Click in mould view"), pickMode_);
-  auto* box = new QVBoxLayout(group);
-  box->addLayout(form);
-  box->addWidget(blendLabel_);
-  box->addWidget(show);
-  box->addWidget(clearPaint);
-  connect(show, &QPushButton::clicked, this, [this] { showBlended(); });
-  connect(clearPaint, &QPushButton::clicked, this, [this] {
-    blend_.faces.clear();
-    refreshBlendWidgets();
-  });
-  refreshBlendWidgets();
-  return group;
+  return form;
 }
 
 void MouldToolsPanel::refreshBlendWidgets() {

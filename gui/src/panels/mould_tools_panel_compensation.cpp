@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 // ddfcam gui: MouldToolsPanel: the compensation actions (start, calibrate, import, step,
-// export) and the undoable edit of Project::mould->compensation.
+// export).
 #include <ddfcam/gui/panels/mould_tools_panel.h>
 
 #include <ddfcam/ddf/mesh_conversion.h>
 #include <ddfcam/error.h>
 #include <ddfcam/gui/document.h>
-#include <ddfcam/gui/document_command.h>
 #include <ddfcam/gui/job_runner.h>
+#include <ddfcam/gui/mould_commands.h>
 #include <ddfcam/io/mesh_io.h>
 #include <ddfcam/planning/project.h>
 
@@ -22,40 +22,6 @@ namespace ddfcam::gui {
 namespace {
 
 using planning::CompensationHistory;
-
-// Replaces the whole history: a step touches every height of the new mould anyway, and the
-// history of a study is a few moulds.
-class SetCompensationCommand : public DocumentCommand {
- public:
-  SetCompensationCommand(Document& document, const QString& text,
-                         std::optional<CompensationHistory> after)
-      : DocumentCommand(document, text), after_(std::move(after)) {}
-
-  std::size_t memoryBytes() const override {
-    std::size_t bytes = sizeof(*this);
-    for (const auto* h : {&before_, &after_})
-      if (*h)
-        for (const planning::CompensationIteration& it : (*h)->iterations)
-          bytes += (it.mouldHeights.size() + it.formedHeights.size()) * sizeof(float);
-    return bytes;
-  }
-
- protected:
-  Changes apply(planning::Project& project) override {
-    if (!project.mould) throw InvalidInput("the project has no mould study");
-    before_ = project.mould->compensation;
-    project.mould->compensation = after_;
-    return Change::Mould;
-  }
-  Changes revert(planning::Project& project) override {
-    project.mould->compensation = before_;
-    return Change::Mould;
-  }
-
- private:
-  std::optional<CompensationHistory> before_;
-  std::optional<CompensationHistory> after_;
-};
 
 // The target DDF: the comparison's mould DDF (its vectors reach the formed part) with the
 // target on the support itself, or the mould mesh converted when nothing was compared yet.

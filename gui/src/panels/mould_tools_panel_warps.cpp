@@ -90,10 +90,13 @@ void MouldToolsPanel::showSurface(ddf::TriangleMesh mesh, bool secondary, bool f
   shown_ = std::move(mesh);
   MouldView* view = workbench().mouldView;
   if (view == nullptr) return;
-  if (secondary)
+  if (secondary) {
     view->showSecondary(shown_);
-  else
+  } else {
+    // A demo is no formed part: the formed side would show a stale surface next to it.
+    view->showSecondary({});
     view->showPrimaryPlain(shown_);
+  }
   if (fitCamera) view->fitCameras();
 }
 

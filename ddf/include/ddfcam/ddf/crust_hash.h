@@ -25,6 +25,12 @@ struct CrustHashParams {
   double subVolumeFraction = 0.5;
 };
 
+/// @brief Hash parameters for a DDF whose vectors are long compared with its support edges (e.g.
+/// vectors sized to reach a distant surface): cellScale = mean vector length / mean support edge
+/// length, clamped to [1, 8], so that a cell holds a few crusts instead of a few sub-volumes of
+/// one crust (cells of the default size make such hashes slow to build and to query).
+CrustHashParams crustHashParamsFor(const DisplacementField& ddf);
+
 /// @brief Spatial hash of the +-1 crusts of a DDF's support faces (dissertation sec. 5.1).
 ///
 /// Occupied grid cells are kept in a hash table keyed by the cell's integer coordinates; each

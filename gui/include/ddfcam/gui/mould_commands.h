@@ -35,4 +35,24 @@ class SetMouldStudyCommand : public DocumentCommand {
   std::optional<planning::MouldStudy> after_;
 };
 
+/// @brief Replaces the compensation history of Project::mould by @p after (undo restores the
+/// history found when it was first applied); notifies Change::Mould. Only the history is kept,
+/// not the whole study: a compensation step leaves surfaces and comparison alone.
+class SetCompensationCommand : public DocumentCommand {
+ public:
+  /// @param after the new history; std::nullopt removes it.
+  SetCompensationCommand(Document& document, const QString& text,
+                         std::optional<planning::CompensationHistory> after);
+  std::size_t memoryBytes() const override;
+
+ protected:
+  /// @throws InvalidInput if the project has no mould study.
+  Changes apply(planning::Project& project) override;
+  Changes revert(planning::Project& project) override;
+
+ private:
+  std::optional<planning::CompensationHistory> before_;
+  std::optional<planning::CompensationHistory> after_;
+};
+
 }  // namespace ddfcam::gui

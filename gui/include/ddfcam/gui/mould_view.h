@@ -112,6 +112,8 @@ class MouldView : public QWidget {
  private:
   struct Scene;
   void linkCameras();
+  /// Colours the secondary surface by @p field (values already checked against the mesh).
+  void colourSecondary(const planning::MeshField& field);
 
   VtkView* primary_ = nullptr;
   VtkView* secondary_ = nullptr;

@@ -70,4 +70,13 @@ SurfaceComparison compareSurfaces(const ddf::DisplacementField& mouldDdf,
 /// @throws std::out_of_range if @p comparison has no stage.
 ScalarField crossingRegionField(const SurfaceComparison& comparison);
 
+/// @brief Re-evaluates @p comparison for another tolerance band and normal orientation without
+/// recomputing the sequence (the deformed points do not depend on either): every deviation
+/// changes sign when @p reverseSign is set, and band and statistics are recomputed for @p band
+/// over the mould's area. The result equals compareSurfaces() run with the new band and
+/// flipNormal.
+/// @throws InvalidInput for an invalid band or a comparison without stages.
+void updateComparisonBand(SurfaceComparison& comparison, const ToleranceBand& band,
+                          bool reverseSign);
+
 }  // namespace ddfcam::planning

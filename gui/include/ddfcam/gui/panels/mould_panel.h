@@ -28,6 +28,8 @@ class QSpinBox;
 
 namespace ddfcam::gui {
 
+class MouldView;
+
 /// @brief Mould comparison: Load mould / Load formed (STL, OBJ, PLY, OFF, VTP, VTU), alignment
 /// (none, picked point pairs, best fit with its warning), resolution, tolerance band and normal
 /// flip, Compare (a job with progress and cancel), statistics, the area histogram and the
@@ -87,7 +89,11 @@ class MouldPanel : public Panel {
 
   /// @brief Comparison settings for the next compare().
   void setResolution(int m);
+  /// @brief Sets the tolerance band, mm; an existing comparison is re-evaluated for it (one undo
+  /// step). @throws InvalidInput for an invalid band.
   void setToleranceBand(const planning::ToleranceBand& band);
+  /// @brief Reverses the mould normal (the sign of every deviation); re-evaluates an existing
+  /// comparison (one undo step).
   void setFlipNormal(bool flip);
   /// @brief Starts the comparison job (planning::compareSurfaces). @return true if started.
   bool compare();
@@ -108,8 +114,9 @@ class MouldPanel : public Panel {
   std::optional<ddf::TriangleMesh> morphSurface() const;
   /// @brief Writes morphSurface() to @p path (io::writeMesh). @return true if written.
   bool exportMorphSurface(const QString& path);
-  /// @brief Writes the deviation (raster mesh, signed distance and deviation vectors as point
-  /// data) to @p path (.vtp). @return true if written.
+  /// @brief Writes the deviation to @p path: .vtp (the mould's raster mesh with the signed
+  /// deviation, tolerance class and deviation vectors as point data) or .csv (one row per raster
+  /// point: position, deviation vector, signed deviation, mm). @return true if written.
   bool exportDeviation(const QString& path);
 
   /// @brief Arms picking: the next clicks in the MouldView follow @p mode.
@@ -123,11 +130,20 @@ class MouldPanel : public Panel {
  private:
   void buildInputs();
   void buildAlignment();
+  void applyDirectAlignment(planning::MouldStudy study, planning::AlignmentMethod method);
+  bool startBestFit(const planning::MouldStudy& study);
   void buildOutputs();
   void buildMorph();
   void refresh();
   void showStudy();
+  // Re-evaluates the stored comparison for the band and orientation in the widgets.
+  void applyBandToResult();
   void showResult(const planning::MouldStudy& study);
+  void indexRasterCopies(const ddf::DisplacementField& ddf);
+  void showResultText(const planning::SurfaceComparison& r);
+  void showHistogram(const planning::SurfaceComparison& r, const ddf::DisplacementField& ddf);
+  void showDeviation(MouldView& view, const planning::SurfaceComparison& r,
+                     const ddf::DisplacementField& ddf);
   void showMorph();
   void onPicked(int view, const Eigen::Vector3d& point);
   void pushStudy(std::optional<planning::MouldStudy> after, const QString& text);

@@ -17,10 +17,12 @@
 #include <optional>
 #include <vector>
 
+class QBoxLayout;
 class QCheckBox;
 class QComboBox;
 class QGroupBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QLabel;
 class QPushButton;
 class QSlider;
@@ -165,8 +167,13 @@ class MouldToolsPanel : public Panel {
 
  private:
   QGroupBox* buildBlending();
+  QFormLayout* buildBlendForm(QGroupBox* group);
   QGroupBox* buildWarps();
   QGroupBox* buildCompensation();
+  QFormLayout* buildCompensationForm(QGroupBox* group);
+  void buildCompensationButtons(QGroupBox* group, QBoxLayout* box);
+  void buildHistoryTable(QGroupBox* group);
+  void connectCompensation();
   void showSurface(ddf::TriangleMesh mesh, bool secondary, bool fitCamera);
   void showMorph();
   void refreshBlendWidgets();
