@@ -22,10 +22,46 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ddfcam::gui {
 namespace {
+
+// Both series share the axes; colour, markers and a legend tell them apart. The deviation of a
+// converging loop falls geometrically (alpha^j), so a logarithmic axis shows the rate as a
+// straight line; iterations are whole numbers.
+void styleConvergencePlot(QCustomPlot* plot, const std::vector<double>& maxMm,
+                          const std::vector<double>& rmsMm) {
+  for (int g = 0; g < plot->graphCount(); ++g) {
+    QCPGraph* graph = plot->graph(g);
+    const bool rms = graph->name() == QLatin1String(MouldToolsPanel::kRmsSeries);
+    if (!rms && graph->name() != QLatin1String(MouldToolsPanel::kMaxSeries)) continue;
+    graph->setPen(QPen(rms ? QColor(200, 40, 40) : QColor(30, 60, 200), 1.5));
+    graph->setScatterStyle(
+        QCPScatterStyle(rms ? QCPScatterStyle::ssSquare : QCPScatterStyle::ssCircle, 6));
+  }
+  auto ticker = QSharedPointer<QCPAxisTickerFixed>::create();
+  ticker->setTickStep(1.0);
+  ticker->setScaleStrategy(QCPAxisTickerFixed::ssMultiples);
+  plot->xAxis->setTicker(ticker);
+  const auto positive = [](const std::vector<double>& v) {
+    return std::all_of(v.begin(), v.end(), [](double x) { return x > 0.0; });
+  };
+  const bool logScale = !maxMm.empty() && positive(maxMm) && positive(rmsMm);
+  plot->yAxis->setScaleType(logScale ? QCPAxis::stLogarithmic : QCPAxis::stLinear);
+  if (logScale) {
+    plot->yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>::create());
+    const double lo = *std::min_element(rmsMm.begin(), rmsMm.end());
+    const double hi = *std::max_element(maxMm.begin(), maxMm.end());
+    plot->yAxis->setRange(lo / 1.5, hi * 1.5);
+  } else {
+    plot->yAxis->setTicker(QSharedPointer<QCPAxisTicker>::create());
+  }
+  if (!maxMm.empty()) plot->xAxis->setRange(-0.25, static_cast<double>(maxMm.size()) - 0.75);
+  plot->legend->setVisible(true);
+  plot->replot();
+}
 
 QDoubleSpinBox* alphaSpin(QWidget* parent, const QString& name, double value) {
   auto* spin = new QDoubleSpinBox(parent);
@@ -243,17 +279,7 @@ void MouldToolsPanel::plotConvergence(const planning::CompensationHistory& histo
   QCustomPlot* plot = workbench().plots.plot(kConvergenceTab);
   setLineSeries(plot, kMaxSeries, x, maxMm, tr("iteration"), tr("deviation (mm)"));
   setLineSeries(plot, kRmsSeries, x, rmsMm, tr("iteration"), tr("deviation (mm)"));
-  // Both series share the axes; colour, markers and a legend tell them apart.
-  for (int g = 0; g < plot->graphCount(); ++g) {
-    QCPGraph* graph = plot->graph(g);
-    const bool rms = graph->name() == QLatin1String(kRmsSeries);
-    if (!rms && graph->name() != QLatin1String(kMaxSeries)) continue;
-    graph->setPen(QPen(rms ? QColor(200, 40, 40) : QColor(30, 60, 200), 1.5));
-    graph->setScatterStyle(
-        QCPScatterStyle(rms ? QCPScatterStyle::ssSquare : QCPScatterStyle::ssCircle, 6));
-  }
-  plot->legend->setVisible(true);
-  plot->replot();
+  styleConvergencePlot(plot, maxMm, rmsMm);
 }
 
 QString MouldToolsPanel::askSavePath(const QString& title, const QString& filter) {
