@@ -51,28 +51,6 @@ std::vector<ddf::Vec3> readVec3List(PayloadReader& in, const char* what) {
   return out;
 }
 
-void putIntList(std::string& out, const std::vector<int>& values) {
-  putCount(out, values.size());
-  for (const int value : values) putI32(out, value);
-}
-
-std::vector<int> readIntList(PayloadReader& in, const char* what) {
-  std::vector<int> out(in.count(4, what));
-  for (int& value : out) value = in.i32(what);
-  return out;
-}
-
-void putFloatList(std::string& out, const std::vector<float>& values) {
-  putCount(out, values.size());
-  for (const float value : values) putF32(out, value);
-}
-
-std::vector<float> readFloatList(PayloadReader& in, const char* what) {
-  std::vector<float> out(in.count(4, what));
-  for (float& value : out) value = in.f32(what);
-  return out;
-}
-
 // An embedded .ddf: u32 byte count + its complete encoding (checksum included).
 ddf::DisplacementField readDdf(PayloadReader& in, const std::string& what) {
   const std::string bytes = in.string("embedded .ddf");

@@ -48,6 +48,8 @@ planning::PathPose readPose(PayloadReader& in) {
   return pose;
 }
 
+}  // namespace
+
 std::vector<int> readIntList(PayloadReader& in, const char* what) {
   std::vector<int> out(in.count(4, what));
   for (int& value : out) value = in.i32(what);
@@ -69,8 +71,6 @@ void putFloatList(std::string& out, const std::vector<float>& values) {
   putCount(out, values.size());
   for (const float value : values) putF32(out, value);
 }
-
-}  // namespace
 
 const char* PayloadReader::take(std::size_t bytes, const char* what) {
   if (rest_.size() < bytes)
@@ -256,9 +256,9 @@ void putTool(std::string& out, const planning::Tool& tool) {
   putF64(out, tool.radiusMm);
   putF64(out, tool.widthMm);
   putI32(out, tool.segments);
-  for (const double value : {tool.edgeRadiusMm, tool.crownRadiusMm, tool.shankRadiusMm,
-                             tool.shankLengthMm, tool.holderRadiusMm, tool.holderLengthMm,
-                             tool.chordToleranceMm})
+  for (const double value :
+       {tool.edgeRadiusMm, tool.crownRadiusMm, tool.shankRadiusMm, tool.shankLengthMm,
+        tool.holderRadiusMm, tool.holderLengthMm, tool.chordToleranceMm})
     putF64(out, value);
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace ddfcam::io::detail {
 
@@ -76,6 +77,9 @@ void putState(std::string& out, const planning::SimulationState& state);
 /// @brief u32 byte count + bytes.
 /// @throws InvalidInput for a string longer than 4 GiB.
 void putString(std::string& out, std::string_view text);
+/// @brief Count + that many i32 / f32 values (the list layout of project_file.h).
+void putIntList(std::string& out, const std::vector<int>& values);
+void putFloatList(std::string& out, const std::vector<float>& values);
 
 /// @brief Payload decoders, the inverses of the encoders; they check lengths but not the
 /// project invariants (planning::validateProject does, once the whole project is read).
@@ -90,5 +94,8 @@ planning::Region readRegion(PayloadReader& in, std::uint32_t formatVersion);
 planning::Tool readTool(PayloadReader& in, std::uint32_t formatVersion);
 planning::ToolPath readPath(PayloadReader& in);
 planning::SimulationState readState(PayloadReader& in);
+/// @brief Inverses of putIntList / putFloatList; @p what names the list in errors.
+std::vector<int> readIntList(PayloadReader& in, const char* what);
+std::vector<float> readFloatList(PayloadReader& in, const char* what);
 
 }  // namespace ddfcam::io::detail

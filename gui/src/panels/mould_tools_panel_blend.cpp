@@ -3,6 +3,8 @@
 // with its blending function and the picks and brush strokes in the mould view.
 #include <ddfcam/gui/panels/mould_tools_panel.h>
 
+#include "mould_tools_widgets.h"
+
 #include <ddfcam/ddf/ddf_warp.h>
 #include <ddfcam/ddf/deformation_sequence.h>
 #include <ddfcam/error.h>
@@ -22,17 +24,6 @@
 
 namespace ddfcam::gui {
 namespace {
-
-QDoubleSpinBox* mmSpin(QWidget* parent, const char* name, double low, double high, double value,
-                       const QString& suffix) {
-  auto* spin = new QDoubleSpinBox(parent);
-  spin->setObjectName(name);
-  spin->setDecimals(2);
-  spin->setRange(low, high);
-  spin->setValue(value);
-  spin->setSuffix(suffix);
-  return spin;
-}
 
 const ddf::DeformationSequence& studySequence(const planning::Project& project) {
   if (!project.mould || !project.mould->result || project.mould->result->sequence.stages.empty())
@@ -74,11 +65,14 @@ QFormLayout* MouldToolsPanel::buildBlendForm(QGroupBox* group) {
   blendKind_->addItem(tr("Radial fall-off"), static_cast<int>(planning::BlendKind::Radial));
   blendKind_->addItem(tr("Painted region"), static_cast<int>(planning::BlendKind::Region));
   blendKind_->addItem(tr("Distance to boundary"), static_cast<int>(planning::BlendKind::Boundary));
-  blendValue_ = mmSpin(group, "blendValueSpin", -5.0, 5.0, defaults.value, {});
-  blendRadius_ = mmSpin(group, "blendRadiusSpin", 0.01, 1e5, defaults.radiusMm, " mm");
-  blendEdge_ = mmSpin(group, "blendEdgeSpin", 0.01, 1e5, defaults.edgeWidthMm, " mm");
-  blendBoundary_ = mmSpin(group, "blendBoundarySpin", 0.01, 1e5, defaults.widthMm, " mm");
-  brush_ = mmSpin(group, "brushRadiusSpin", 0.01, 1e5, 5.0, " mm");
+  blendValue_ = mould_tools::decimalSpin(group, "blendValueSpin", -5.0, 5.0, defaults.value, {});
+  blendRadius_ =
+      mould_tools::decimalSpin(group, "blendRadiusSpin", 0.01, 1e5, defaults.radiusMm, " mm");
+  blendEdge_ =
+      mould_tools::decimalSpin(group, "blendEdgeSpin", 0.01, 1e5, defaults.edgeWidthMm, " mm");
+  blendBoundary_ =
+      mould_tools::decimalSpin(group, "blendBoundarySpin", 0.01, 1e5, defaults.widthMm, " mm");
+  brush_ = mould_tools::decimalSpin(group, "brushRadiusSpin", 0.01, 1e5, 5.0, " mm");
   pickMode_ = new QComboBox(group);
   pickMode_->setObjectName("blendPickModeCombo");
   pickMode_->addItem(tr("nothing"), static_cast<int>(BlendPickMode::None));

@@ -3,6 +3,8 @@
 // plate scaled and bent) and the export of the shown surface.
 #include <ddfcam/gui/panels/mould_tools_panel.h>
 
+#include "mould_tools_widgets.h"
+
 #include <ddfcam/ddf/ddf_warp.h>
 #include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/error.h>
@@ -29,17 +31,6 @@ namespace {
 
 constexpr int kSliderSteps = 100;
 
-QDoubleSpinBox* valueSpin(QWidget* parent, const char* name, double low, double high, double value,
-                          const QString& suffix = {}) {
-  auto* spin = new QDoubleSpinBox(parent);
-  spin->setObjectName(name);
-  spin->setDecimals(2);
-  spin->setRange(low, high);
-  spin->setValue(value);
-  spin->setSuffix(suffix);
-  return spin;
-}
-
 }  // namespace
 
 QGroupBox* MouldToolsPanel::buildWarps() {
@@ -54,8 +45,9 @@ QGroupBox* MouldToolsPanel::buildWarps() {
   morphSlider_->setEnabled(false);
   auto* plate = new QPushButton(tr("Engraved plate demo"), group);
   plate->setObjectName("engravedPlateButton");
-  scaleFactor_ = valueSpin(group, "scaleFactorSpin", -10.0, 10.0, 3.0);
-  cylinderRadius_ = valueSpin(group, "cylinderRadiusSpin", -10000.0, 10000.0, 80.0, " mm");
+  scaleFactor_ = mould_tools::decimalSpin(group, "scaleFactorSpin", -10.0, 10.0, 3.0);
+  cylinderRadius_ =
+      mould_tools::decimalSpin(group, "cylinderRadiusSpin", -10000.0, 10000.0, 80.0, " mm");
   auto* scale = new QPushButton(tr("Scale vectors"), group);
   scale->setObjectName("scaleVectorsButton");
   auto* bend = new QPushButton(tr("Bend onto cylinder"), group);
