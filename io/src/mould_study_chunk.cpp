@@ -30,16 +30,6 @@ bool readFlag(PayloadReader& in, const char* what) {
   return value == 1;
 }
 
-void putVec3(std::string& out, const Eigen::Vector3d& v) {
-  for (int i = 0; i < 3; ++i) putF64(out, v[i]);
-}
-
-Eigen::Vector3d readVec3(PayloadReader& in, const char* what) {
-  Eigen::Vector3d v;
-  for (int i = 0; i < 3; ++i) v[i] = in.f64(what);
-  return v;
-}
-
 void putVec3List(std::string& out, const std::vector<ddf::Vec3>& points) {
   putCount(out, points.size());
   for (const ddf::Vec3& p : points) putVec3(out, p);

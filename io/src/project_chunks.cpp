@@ -22,16 +22,6 @@ void putCount(std::string& out, std::size_t count) {
   putU64(out, static_cast<std::uint64_t>(count));
 }
 
-void putVec3(std::string& out, const Eigen::Vector3d& v) {
-  for (int i = 0; i < 3; ++i) putF64(out, v[i]);
-}
-
-Eigen::Vector3d readVec3(PayloadReader& in, const char* what) {
-  Eigen::Vector3d v;
-  for (int i = 0; i < 3; ++i) v[i] = in.f64(what);
-  return v;
-}
-
 void putPose(std::string& out, const planning::PathPose& pose) {
   const Eigen::Matrix4d& m = pose.pose.matrix();
   for (int c = 0; c < 4; ++c)
@@ -49,6 +39,16 @@ planning::PathPose readPose(PayloadReader& in) {
 }
 
 }  // namespace
+
+void putVec3(std::string& out, const Eigen::Vector3d& v) {
+  for (int i = 0; i < 3; ++i) putF64(out, v[i]);
+}
+
+Eigen::Vector3d readVec3(PayloadReader& in, const char* what) {
+  Eigen::Vector3d v;
+  for (int i = 0; i < 3; ++i) v[i] = in.f64(what);
+  return v;
+}
 
 std::vector<int> readIntList(PayloadReader& in, const char* what) {
   std::vector<int> out(in.count(4, what));

@@ -77,6 +77,8 @@ void putState(std::string& out, const planning::SimulationState& state);
 /// @brief u32 byte count + bytes.
 /// @throws InvalidInput for a string longer than 4 GiB.
 void putString(std::string& out, std::string_view text);
+/// @brief Three f64 (x, y, z), mm.
+void putVec3(std::string& out, const Eigen::Vector3d& v);
 /// @brief Count + that many i32 / f32 values (the list layout of project_file.h).
 void putIntList(std::string& out, const std::vector<int>& values);
 void putFloatList(std::string& out, const std::vector<float>& values);
@@ -94,6 +96,8 @@ planning::Region readRegion(PayloadReader& in, std::uint32_t formatVersion);
 planning::Tool readTool(PayloadReader& in, std::uint32_t formatVersion);
 planning::ToolPath readPath(PayloadReader& in);
 planning::SimulationState readState(PayloadReader& in);
+/// @brief Inverse of putVec3; @p what names the value in errors.
+Eigen::Vector3d readVec3(PayloadReader& in, const char* what);
 /// @brief Inverses of putIntList / putFloatList; @p what names the list in errors.
 std::vector<int> readIntList(PayloadReader& in, const char* what);
 std::vector<float> readFloatList(PayloadReader& in, const char* what);

@@ -5,6 +5,8 @@
 #include <ddfcam/ddf/triangle_mesh.h>
 #include <ddfcam/io/mesh_io.h>
 
+#include "../support/test_meshes.h"
+
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -12,23 +14,10 @@
 
 namespace ddfcam::test {
 
-/// The surface z = @p height(x, y) over [0, width] x [0, depth] mm, nx x ny cells of two
-/// counter-clockwise triangles each (normal +z for a flat surface).
+/// The surface z = @p height(x, y) over [0, width] x [0, depth] mm, nx x ny cells.
 inline ddf::TriangleMesh heightFieldMesh(double width, double depth, int nx, int ny,
                                          const std::function<double(double, double)>& height) {
-  ddf::TriangleMesh mesh;
-  for (int j = 0; j <= ny; ++j)
-    for (int i = 0; i <= nx; ++i) {
-      const double x = width * i / nx, y = depth * j / ny;
-      mesh.vertices.emplace_back(x, y, height(x, y));
-    }
-  const auto at = [nx](int i, int j) { return j * (nx + 1) + i; };
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  return mesh;
+  return heightFieldMesh(0.0, width, 0.0, depth, nx, ny, height);
 }
 
 /// Sheet of 40 x 10 mm: two periods of a sinusoid of wavelength 20 mm along x.

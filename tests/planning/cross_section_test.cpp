@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/test_meshes.h"
+
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -16,19 +18,7 @@ using Eigen::Vector2d;
 using Eigen::Vector3d;
 
 ddf::TriangleMesh heightGrid(int n, double half, const std::function<double(double, double)>& z) {
-  ddf::TriangleMesh mesh;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const double x = -half + 2.0 * half * i / n, y = -half + 2.0 * half * j / n;
-      mesh.vertices.emplace_back(x, y, z(x, y));
-    }
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i;
-      mesh.triangles.push_back({a, a + 1, a + n + 2});
-      mesh.triangles.push_back({a, a + n + 2, a + n + 1});
-    }
-  return mesh;
+  return test::heightFieldMesh(-half, half, -half, half, n, n, z);
 }
 
 // UV sphere of radius r with poles; returns the longest edge through @p longestEdge.

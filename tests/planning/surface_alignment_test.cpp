@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/test_meshes.h"
+
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -29,20 +31,9 @@ double transformError(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, do
 // z = 8 sin(x / 15) + 0.004 (x - 10) y^2 + 3 cos(y / 11) on a 90 x 70 mm grid: no symmetry
 // that would let ICP slide.
 ddf::TriangleMesh analyticSurface(int n) {
-  ddf::TriangleMesh mesh;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const double x = -45.0 + 90.0 * i / n, y = -35.0 + 70.0 * j / n;
-      mesh.vertices.emplace_back(
-          x, y, 8.0 * std::sin(x / 15.0) + 0.004 * (x - 10.0) * y * y + 3.0 * std::cos(y / 11.0));
-    }
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i;
-      mesh.triangles.push_back({a, a + 1, a + n + 2});
-      mesh.triangles.push_back({a, a + n + 2, a + n + 1});
-    }
-  return mesh;
+  return test::heightFieldMesh(-45.0, 45.0, -35.0, 35.0, n, n, [](double x, double y) {
+    return 8.0 * std::sin(x / 15.0) + 0.004 * (x - 10.0) * y * y + 3.0 * std::cos(y / 11.0);
+  });
 }
 
 TEST(SurfaceAlignment, ThreePairsRecoverKnownTransformExactly) {

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/test_meshes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -19,25 +21,12 @@ namespace {
 
 using ddf::Vec3;
 
-/// Grid mesh of z = height(x, y) over [x0, x1] x [y0, y1] with cells of @p cell mm, each split
-/// into two triangles, counter-clockwise seen from +z.
+/// Grid mesh of z = height(x, y) over [x0, x1] x [y0, y1] with cells of @p cell mm.
 ddf::TriangleMesh gridMesh(double x0, double x1, double y0, double y1, double cell,
                            const std::function<double(double, double)>& height) {
   const int nx = static_cast<int>(std::lround((x1 - x0) / cell));
   const int ny = static_cast<int>(std::lround((y1 - y0) / cell));
-  ddf::TriangleMesh mesh;
-  for (int j = 0; j <= ny; ++j)
-    for (int i = 0; i <= nx; ++i) {
-      const double x = x0 + (x1 - x0) * i / nx, y = y0 + (y1 - y0) * j / ny;
-      mesh.vertices.emplace_back(x, y, height(x, y));
-    }
-  const auto id = [nx](int i, int j) { return j * (nx + 1) + i; };
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  return mesh;
+  return test::heightFieldMesh(x0, x1, y0, y1, nx, ny, height);
 }
 
 constexpr double kA = 1.0;   // sine amplitude, mm

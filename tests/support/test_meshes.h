@@ -7,6 +7,7 @@
 #include <ddfcam/ddf/triangle_mesh.h>
 
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace ddfcam::test {
@@ -63,6 +64,25 @@ inline ddf::TriangleMesh boxMesh(const ddf::Vec3& lo, const ddf::Vec3& hi) {
     box.triangles.push_back({q[0], q[2], q[3]});
   }
   return box;
+}
+
+/// The surface z = @p height(x, y) over [x0, x1] x [y0, y1] mm as nx x ny cells of two
+/// counter-clockwise triangles each (normal +z for a flat surface).
+inline ddf::TriangleMesh heightFieldMesh(double x0, double x1, double y0, double y1, int nx, int ny,
+                                         const std::function<double(double, double)>& height) {
+  ddf::TriangleMesh mesh;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      const double x = x0 + (x1 - x0) * i / nx, y = y0 + (y1 - y0) * j / ny;
+      mesh.vertices.emplace_back(x, y, height(x, y));
+    }
+  const auto at = [nx](int i, int j) { return j * (nx + 1) + i; };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return mesh;
 }
 
 }  // namespace ddfcam::test
