@@ -12,6 +12,7 @@
 #include "console.h"
 #include "json_writer.h"
 #include "mould_options.h"
+#include "run_warnings.h"
 
 #include <algorithm>
 #include <array>
@@ -31,7 +32,13 @@ constexpr const char* kHelp =
     "(.stl/.obj/.ply/.off/.vtp/.vtu, mm): builds a DDF on the mould, represents the formed\n"
     "surface as its heights (split into a sequence of smaller deformations where the\n"
     "unique-projection property fails, fig. 9.5) and reports the signed deviation along the\n"
-    "mould normal: > 0 short of the mould (blue), < 0 beyond it (red), inside the band green.\n\n"
+    "mould normal: > 0 short of the mould (blue), < 0 beyond it (red), inside the band green.\n"
+    "Beside the statistics it reports their coverage: the share of the mould's area with a\n"
+    "trusted deviation. Faces the deformation sequence leaves unresolved are excluded from the\n"
+    "statistics and counted; a sequence that stalls (splits carrying only slivers of the\n"
+    "deformation) stops early and says what to change.\n"
+    "Warns when the coverage is below --min-coverage, faces are unresolved or the sequence\n"
+    "stalled; with --strict any warning makes the exit code 3 (after writing the outputs).\n\n"
     "options:\n"
     "  -o, --output FILE     deviation map as VTK PolyData (.vtp): the mould's raster mesh with\n"
     "                        'deviation' (mm), 'tolerance_class' (-1, 0, +1), 'deviation_vector'\n"
@@ -44,9 +51,13 @@ constexpr const char* kHelp =
     "  --align none|best-fit alignment of FORMED onto MOULD (default none: as positioned)\n"
     "  --max-stages N        most DDFs in the deformation sequence (default 12)\n"
     "  --reach MM            length of the displacement vectors (default: from the distance)\n"
+    "  --min-coverage P      warn when the statistics cover less than P % of the mould's area\n"
+    "                        (default 50: a formed part and its mould overlap almost entirely)\n"
+    "  --strict              exit with code 3 when the run had any warning (the best-fit\n"
+    "                        note excepted)\n"
     "  -h, --help            show this help\n";
 
-constexpr std::array<OptionSpec, 10> kOptions = {{{"output", 'o', true},
+constexpr std::array<OptionSpec, 12> kOptions = {{{"output", 'o', true},
                                                   {"csv", '\0', true},
                                                   {"json", '\0', true},
                                                   {"resolution", '\0', true},
@@ -55,12 +66,16 @@ constexpr std::array<OptionSpec, 10> kOptions = {{{"output", 'o', true},
                                                   {"flip-normal", '\0', false},
                                                   {"align", '\0', true},
                                                   {"max-stages", '\0', true},
-                                                  {"reach", '\0', true}}};
+                                                  {"reach", '\0', true},
+                                                  {"min-coverage", '\0', true},
+                                                  {"strict", '\0', false}}};
 
 struct CompareRun {
   planning::LoadedSurface mould, formed;
   std::optional<planning::RigidAlignment> alignment;
   planning::SurfaceComparison result;
+  planning::ComparisonCoverage coverage;
+  RunWarnings warnings;
   double loadSeconds = 0, alignSeconds = 0, compareSeconds = 0;
 };
 
@@ -114,12 +129,42 @@ void printSummary(const CompareRun& run) {
   std::printf("  within [%.4g, %.4g] mm: %.2f %% of %.6g mm^2 (short %.2f %%, beyond %.2f %%)\n",
               band.lowerMm, band.upperMm, s.inTolerancePercent, s.areaMm2, s.materialLeftPercent,
               s.overcutPercent);
+  const planning::ComparisonCoverage& c = run.coverage;
+  std::printf(
+      "  coverage: %.2f %% of the mould's %.6g mm^2 (unresolved %zu faces, %.6g mm^2 excluded; "
+      "formed surface not found on %.6g mm^2)\n",
+      c.compared.percent(), c.compared.totalAreaMm2, c.unresolvedFaces, c.unresolvedAreaMm2,
+      c.missingAreaMm2);
   std::printf("  stages: %zu (fractions", seq.stages.size());
   for (const ddf::DeformationStage& stage : seq.stages) std::printf(" %.3g", stage.fraction);
   std::printf("), crossing faces %zu, unresolved faces %zu, missing points %zu\n",
               seq.crossingFaces.size(), seq.unresolvedFaces.size(), seq.missingPoints);
   std::printf("  time (s): load %.3f, align %.3f, compare %.3f\n", run.loadSeconds,
               run.alignSeconds, run.compareSeconds);
+}
+
+// Low coverage and unresolved faces: the statistics describe only part of the mould.
+void warnAbout(CompareRun& run, double minCoveragePercent) {
+  const planning::ComparisonCoverage& c = run.coverage;
+  char text[400];
+  if (c.compared.percent() < minCoveragePercent) {
+    std::snprintf(text, sizeof text,
+                  "the statistics cover only %.3g %% of the mould (%.6g of %.6g mm^2, "
+                  "--min-coverage %.3g %%): the formed surface overlaps little of it; check "
+                  "the files, their units and the alignment",
+                  c.compared.percent(), c.compared.coveredAreaMm2, c.compared.totalAreaMm2,
+                  minCoveragePercent);
+    run.warnings.add(text);
+  }
+  if (run.result.sequence.stalled) run.warnings.add(planning::stallAdvice(run.result));
+  if (c.unresolvedFaces > 0) {
+    std::snprintf(text, sizeof text,
+                  "%zu faces (%.6g mm^2) are unresolved by the deformation sequence and left "
+                  "out of the statistics; allow more stages (--max-stages) or check the "
+                  "alignment",
+                  c.unresolvedFaces, c.unresolvedAreaMm2);
+    run.warnings.add(text);
+  }
 }
 
 void writeHistogram(JsonWriter& json, const CompareRun& run) {
@@ -129,8 +174,10 @@ void writeHistogram(JsonWriter& json, const CompareRun& run) {
   // surface, whose area differs).
   ddf::DisplacementField mould = run.result.sequence.stages.front().ddf;
   std::fill(mould.allHeights().begin(), mould.allHeights().end(), 0.0f);
+  // Over the faces the statistics use: unresolved deviations would widen the range and fill it.
   const planning::AreaHistogram h =
-      planning::errorHistogram(run.result.deviation, mould, 40, s.minMm - pad, s.maxMm + pad);
+      planning::errorHistogram(run.result.deviation, mould, 40, s.minMm - pad, s.maxMm + pad,
+                               planning::resolvedFaces(run.result));
   json.key("histogram").beginObject();
   json.key("lower_mm").value(h.lowerMm).key("upper_mm").value(h.upperMm);
   json.key("bin_width_mm").value(h.binWidthMm());
@@ -149,6 +196,15 @@ void writeStatistics(JsonWriter& json, const planning::ErrorStatistics& s) {
   json.key("short_percent").value(s.materialLeftPercent);
   json.key("beyond_percent").value(s.overcutPercent);
   json.key("area_mm2").value(s.areaMm2).key("points").value(s.points).endObject();
+}
+
+void writeCoverage(JsonWriter& json, const planning::ComparisonCoverage& c) {
+  json.key("coverage").beginObject();
+  json.key("coverage_percent").value(c.compared.percent());
+  json.key("compared_area_mm2").value(c.compared.coveredAreaMm2);
+  json.key("mould_area_mm2").value(c.compared.totalAreaMm2);
+  json.key("unresolved_area_mm2").value(c.unresolvedAreaMm2);
+  json.key("missing_area_mm2").value(c.missingAreaMm2).endObject();
 }
 
 void writeSequence(JsonWriter& json, const ddf::DeformationSequence& seq) {
@@ -179,7 +235,9 @@ void writeJson(const Arguments& args, const CompareRun& run, const std::filesyst
   }
   json.endObject();
   writeStatistics(json, run.result.statistics);
+  writeCoverage(json, run.coverage);
   writeSequence(json, run.result.sequence);
+  run.warnings.write(json);
   writeHistogram(json, run);
   json.key("seconds").beginObject().key("load").value(run.loadSeconds);
   json.key("align").value(run.alignSeconds).key("compare").value(run.compareSeconds).endObject();
@@ -207,6 +265,7 @@ int runCompare(std::span<const std::string> words) {
   args.expectPositionals(2, "MOULD FORMED");
   installLogSink();
   planning::ComparisonParams params = comparisonParams(args);
+  const double minCoverage = minCoverageOption(args, planning::kLowComparisonCoveragePercent);
   const std::string method = args.value("align").value_or("none");
   if (method != "none" && method != "best-fit")
     throw UsageError("--align: expected none or best-fit, got " + method);
@@ -223,9 +282,11 @@ int runCompare(std::span<const std::string> words) {
   run.result = planning::compareSurfaces(run.mould.mesh, run.formed.mesh, params);
   endProgressLine();
   run.compareSeconds = secondsSince(start);
+  run.coverage = planning::comparisonCoverage(run.result);
   printSummary(run);
+  warnAbout(run, minCoverage);
   writeOutputs(args, run);
-  return 0;
+  return run.warnings.exitCode(args.has("strict"), "compare");
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <ddfcam/error.h>
 #include <ddfcam/io/apt_writer.h>
 #include <ddfcam/io/cutter_tool.h>
+#include <ddfcam/io/machine_file.h>
 #include <ddfcam/io/path_file.h>
 
 #include "arguments.h"
@@ -41,6 +42,10 @@ constexpr const char* kHelp =
     "                           G-code: 3axis, 5axis-ac or 5axis-bc (table-table machine with\n"
     "                           the pivot at the origin; default 5axis-ac when IN has tool\n"
     "                           axes, else 3axis)\n"
+    "  --machine FILE           G-code for the 5-axis machine described in FILE (JSON: rotary\n"
+    "                           axes and their directions, pivot, offsets, limits, preferred\n"
+    "                           solution, TCP; samples in resources/machines/, format in\n"
+    "                           docs/machines.md); replaces --dialect\n"
     "  --in-units mm|in|m       IN's numbers are really in this unit (overrides what IN says)\n"
     "tool (G-code needs a cutter; default: IN's CUTTER record; APT: written as CUTTER):\n"
     "  --tool KIND              ball_end, flat_end or torus (= torus_cutter) for G-code; any\n"
@@ -49,12 +54,13 @@ constexpr const char* kHelp =
     "  --corner-radius MM       torus corner radius (default radius / 4)\n"
     "  -h, --help               show this help\n";
 
-constexpr std::array<OptionSpec, 10> kSpecs = {
-    OptionSpec{"output", 'o', true},           OptionSpec{"format", '\0', true},
-    OptionSpec{"units", '\0', true},           OptionSpec{"decimals", '\0', true},
-    OptionSpec{"vector-decimals", '\0', true}, OptionSpec{"dialect", '\0', true},
-    OptionSpec{"in-units", '\0', true},        OptionSpec{"tool", '\0', true},
-    OptionSpec{"radius", '\0', true},          OptionSpec{"corner-radius", '\0', true}};
+constexpr std::array<OptionSpec, 11> kSpecs = {
+    OptionSpec{"machine", '\0', true},      OptionSpec{"output", 'o', true},
+    OptionSpec{"format", '\0', true},       OptionSpec{"units", '\0', true},
+    OptionSpec{"decimals", '\0', true},     OptionSpec{"vector-decimals", '\0', true},
+    OptionSpec{"dialect", '\0', true},      OptionSpec{"in-units", '\0', true},
+    OptionSpec{"tool", '\0', true},         OptionSpec{"radius", '\0', true},
+    OptionSpec{"corner-radius", '\0', true}};
 
 std::optional<io::LengthUnit> unitOption(const Arguments& args, const std::string& name,
                                          bool metre) {
@@ -132,6 +138,11 @@ io::PathWriteParams writeParams(const Arguments& args, io::PathFormat format,
                                  : io::GCodeWriteParams::Mode::FiveAxis;
   p.gcode.kinematics.pair =
       kind == "5axis-bc" ? planning::RotaryPair::BC : planning::RotaryPair::AC;
+  if (const auto machine = args.value("machine")) {
+    if (format != io::PathFormat::GCode) throw UsageError("--machine applies to G-code output");
+    if (args.has("dialect")) throw UsageError("--machine replaces --dialect; give one of them");
+    io::applyMachine(io::readMachineFile(*machine), p.gcode);
+  }
   return p;
 }
 
@@ -155,6 +166,11 @@ void write(io::ClProgram program, const std::optional<planning::Tool>& tool,
       program.cutter = io::aptCutter(*tool);
       break;
     default:
+      if (!program.toolChanges.empty())
+        std::fprintf(stderr,
+                     "warning: %s: CSV has no tool column; the program's %zu tool changes are "
+                     "not kept (write APT or G-code to keep them)\n",
+                     out.string().c_str(), program.toolChanges.size());
       if (!tool) return io::writePathFile(program, planning::Tool{}, out, params);
   }
   io::writePathFile(program, *tool, out, params);

@@ -9,6 +9,7 @@
 #include <ddfcam/io/project_file.h>
 #include <ddfcam/io/tool_path_csv.h>
 #include <ddfcam/io/vtp_writer.h>
+#include <ddfcam/planning/coverage.h>
 #include <ddfcam/planning/error_map.h>
 #include <ddfcam/planning/grinding_simulation.h>
 #include <ddfcam/planning/penetration_correction.h>
@@ -20,6 +21,8 @@
 #include "console.h"
 #include "error_map_vtp.h"
 #include "json_writer.h"
+#include "run_warnings.h"
+#include "simulate_checks.h"
 #include "simulate_import.h"
 #include "simulate_inputs.h"
 
@@ -51,7 +54,13 @@ constexpr const char* kHelp =
     "normal; > 0 material left, < 0 overcut) as a .vtp error map and the statistics as JSON,\n"
     "and prints a summary. APT, YAML and .ls programs and CSV tables without normals are placed\n"
     "by their own tool axes (contacts found on PART; a point without an axis points +z); their\n"
-    "link moves are cut, rapid moves only with --keep-rapids.\n\n"
+    "link moves are cut, rapid moves only with --keep-rapids.\n"
+    "Beside the statistics it reports the coverage (the share of the part the tool came within\n"
+    "0.1 mm of the desired surface at some pose) and the raster points cut below the crust\n"
+    "bottom, where the depth buffer clamps the cut, so the true overcut is deeper than the\n"
+    "minimum shown. Warns about those, a coverage below --min-coverage, poses off the part,\n"
+    "non-V-convex cuts and collisions; with --strict any warning makes the exit code 3 (after\n"
+    "writing the outputs).\n\n"
     "options:\n"
     "  --paths FILE             tool-path file (required): CSV (link and rapid rows are not\n"
     "                           cut), APT/CLDATA, ROS toolpath YAML or FANUC .ls\n"
@@ -60,9 +69,21 @@ constexpr const char* kHelp =
     "                           Rz(AZ) Ry(AY) Rx(AX) (x first), before --translate\n"
     "  --translate X,Y,Z        move the path by this vector, mm, after the unit and rotation\n"
     "  --keep-rapids            also place and cut the rapid moves (not for CSVs with normals)\n"
+    "  --vectors axis|approach|normal|auto\n"
+    "                           what the file's i,j,k vectors are: tool axes (tip to holder),\n"
+    "                           approach directions (into the part, as robots give them) or\n"
+    "                           surface normals; auto (default) decides from PART (into it:\n"
+    "                           approach) and the report says why; a gouging choice is warned\n"
+    "  --points contact|tip|file|auto\n"
+    "                           what the file's points are: contacts on the surface, tool tips\n"
+    "                           (wheel and ball centres), as the file says; auto (default)\n"
+    "                           decides from their distance to PART\n"
     "  -o, --output FILE        simulated part as .ddf (required)\n"
     "  --error-map FILE         deviation per raster point as VTK PolyData (.vtp)\n"
     "  --report FILE            statistics as JSON\n"
+    "  --min-coverage P         warn when the tool touches less than P % of the part (default\n"
+    "                           5: even a path for one region covers more)\n"
+    "  --strict                 exit with code 3 when the run had any warning\n"
     "tool:\n"
     "  --tool KIND              roll (= cylinder_roll, default), ball (bare sphere = sphere),\n"
     "                           cylinder_roll, sphere, belt_contact_wheel, ball_end, flat_end,\n"
@@ -129,6 +150,9 @@ struct SimulationResult {
   std::vector<planning::PassSampling> sampling;
   ImportFacts import;
   planning::ErrorStatistics stats;
+  planning::Coverage coverage;       // area the tool touched over the part's area
+  planning::CrustClamping clamping;  // points left at the crust bottom by a deeper cut
+  RunWarnings warnings;
   int passes = 0, poses = 0;
   double removedVolumeMm3 = 0, prestonFeedMmPerMin = 0;
   double loadSeconds = 0, correctSeconds = 0, simulateSeconds = 0, totalSeconds = 0;
@@ -202,6 +226,25 @@ void writeProcess(JsonWriter& json, const SimulateOptions& o, const SimulationRe
   }
 }
 
+// The statistics with their coverage and the clamping that bounds the minimum.
+void writeDeviation(JsonWriter& json, const SimulationResult& r) {
+  const planning::ErrorStatistics& s = r.stats;
+  json.key("deviation").beginObject();
+  json.key("max_mm").value(s.maxMm).key("min_mm").value(s.minMm);
+  json.key("mean_mm").value(s.meanMm).key("rms_mm").value(s.rmsMm);
+  json.key("in_tolerance_percent").value(s.inTolerancePercent);
+  json.key("material_left_percent").value(s.materialLeftPercent);
+  json.key("overcut_percent").value(s.overcutPercent);
+  json.key("area_mm2").value(s.areaMm2).key("points").value(s.points);
+  json.key("coverage_percent").value(r.coverage.percent());
+  json.key("touched_area_mm2").value(r.coverage.coveredAreaMm2);
+  json.key("part_area_mm2").value(r.coverage.totalAreaMm2);
+  json.key("clamped_points").value(r.clamping.points);
+  json.key("clamped_area_mm2").value(r.clamping.areaMm2);
+  json.key("min_is_bound").value(r.clamping.points > 0);
+  json.endObject();
+}
+
 void writeReport(const SimulateOptions& o, const SimulationResult& r) {
   JsonWriter json;
   json.beginObject();
@@ -216,15 +259,7 @@ void writeReport(const SimulateOptions& o, const SimulationResult& r) {
   json.key("poses").value(r.poses).key("passes").value(r.passes);
   writeSampling(json, o, r);
   writeProcess(json, o, r);
-  const planning::ErrorStatistics& s = r.stats;
-  json.key("deviation").beginObject();
-  json.key("max_mm").value(s.maxMm).key("min_mm").value(s.minMm);
-  json.key("mean_mm").value(s.meanMm).key("rms_mm").value(s.rmsMm);
-  json.key("in_tolerance_percent").value(s.inTolerancePercent);
-  json.key("material_left_percent").value(s.materialLeftPercent);
-  json.key("overcut_percent").value(s.overcutPercent);
-  json.key("area_mm2").value(s.areaMm2).key("points").value(s.points);
-  json.endObject();
+  writeDeviation(json, r);
   json.key("removed_volume_mm3").value(r.removedVolumeMm3);
   const bool rigid = !o.preston.enabled;
   if (rigid && o.checkVConvexity)
@@ -233,10 +268,13 @@ void writeReport(const SimulateOptions& o, const SimulationResult& r) {
     json.key("v_convexity_poses").null();
   if (rigid) {
     json.key("heights_lowered").value(r.grinding.pointsLowered);
+    json.key("heights_clamped").value(r.grinding.pointsClamped);
     json.key("collision_poses").value(r.grinding.collisions.size());
   } else {
-    json.key("heights_lowered").null().key("collision_poses").null();
+    json.key("heights_lowered").null().key("heights_clamped").null();
+    json.key("collision_poses").null();
   }
+  r.warnings.write(json);
   json.key("seconds").beginObject();
   json.key("load").value(r.loadSeconds).key("correct").value(r.correctSeconds);
   json.key("simulate").value(r.simulateSeconds);
@@ -265,12 +303,11 @@ void printSummary(const SimulateOptions& o, const SimulationResult& r) {
   std::printf("  within +-%.4g mm: %.2f %% of %.6g mm^2 (material left %.2f %%, overcut %.2f %%)\n",
               o.toleranceMm, s.inTolerancePercent, s.areaMm2, s.materialLeftPercent,
               s.overcutPercent);
-  if (!r.grinding.vConvexity.empty())
-    std::printf("  warning: %zu poses cut non-V-convex stubbles (fig. 8.15)\n",
-                r.grinding.vConvexity.size());
-  if (!r.grinding.collisions.empty())
-    std::printf("  warning: %zu poses collide with the non-cutting part (sec. 8.5)\n",
-                r.grinding.collisions.size());
+  std::printf("  coverage: the tool touched %.2f %% of the part (%.6g of %.6g mm^2)\n",
+              r.coverage.percent(), r.coverage.coveredAreaMm2, r.coverage.totalAreaMm2);
+  if (r.clamping.points > 0)
+    std::printf("  crust bottom: %zu raster points (%.4g mm^2) clamped, min is a bound\n",
+                r.clamping.points, r.clamping.areaMm2);
   std::printf("wrote %s\n", o.output.string().c_str());
 }
 
@@ -344,15 +381,18 @@ int runSimulate(std::span<const std::string> words) {
   const planning::ScalarField deviation = planning::deviationMap(part, goal);
   const planning::ToleranceBand band{-o.toleranceMm, o.toleranceMm};
   r.stats = planning::errorStatistics(deviation, goal, band);
+  r.clamping = planning::crustClamping(deviation, part);
+  r.coverage = simulationCoverage(goal, o, path.path);
   if (o.errorMap) {
     io::VtpPointData data;
     const ddf::TriangleMesh mesh = errorMapMesh(part, deviation, band, data);
     io::writeVtp(mesh, data, *o.errorMap);
   }
   r.totalSeconds = secondsSince(begin);
+  collectSimulateWarnings(o, {r.import, r.coverage, r.clamping, r.stats, r.grinding}, r.warnings);
   if (o.report) writeReport(o, r);
   printSummary(o, r);
-  return 0;
+  return r.warnings.exitCode(o.strict, "simulate");
 }
 
 }  // namespace

@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <limits>
+#include <string>
 #include <vector>
 
 namespace ddfcam::cli {
@@ -25,11 +27,14 @@ void contactFacts(const ddf::DisplacementField& goal, const planning::ToolPath& 
   const planning::MeshDistance mesh(ddf::extractRasterMesh(goal).mesh);
   int firstOff = -1;
   for (std::size_t i = 0; i < path.poses.size(); ++i) {
-    const auto near = mesh.closestPoint(path.poses[i].contact, kOffPartMm);
-    if (!near) {
+    const auto near = mesh.closestPoint(path.poses[i].contact);
+    const double distance = near ? near->distance : std::numeric_limits<double>::infinity();
+    facts.maxContactDistanceMm = std::max(facts.maxContactDistanceMm, distance);
+    if (distance > kOffPartMm) {
       if (facts.pointsOffPart++ == 0) firstOff = static_cast<int>(i);
     } else {
-      facts.maxContactDistanceMm = std::max(facts.maxContactDistanceMm, near->distance);
+      facts.maxOnPartContactDistanceMm =
+          std::max(facts.maxOnPartContactDistanceMm.value_or(0.0), distance);
     }
   }
   if (facts.pointsOffPart > 0)
@@ -39,13 +44,35 @@ void contactFacts(const ddf::DisplacementField& goal, const planning::ToolPath& 
                                std::to_string(firstOff) + ")"});
 }
 
-CsvPath fromCsv(const io::ClProgram& program, const ddf::DisplacementField& goal,
-                const SimulateOptions& o, std::vector<io::ClMessage>& warnings) {
+std::string pointsName(io::ClPointKind kind) {
+  return kind == io::ClPointKind::Contact ? "contact" : "tip";
+}
+
+CsvPath fromCsv(io::ClProgram program, const ddf::DisplacementField& goal, const SimulateOptions& o,
+                std::vector<io::ClMessage>& warnings) {
   if (o.import.keepRapids)
     throw InvalidInput("simulate: --keep-rapids: " + o.paths.filename().string() +
                        " is a CSV, of which only the cut rows are simulated");
+  if (o.import.vectors == io::PathVectorMeaning::ApproachDirection ||
+      o.import.vectors == io::PathVectorMeaning::SurfaceNormal)
+    throw InvalidInput("simulate: --vectors " +
+                       std::string(io::pathVectorMeaningName(o.import.vectors)) + ": " +
+                       o.paths.filename().string() +
+                       " gives normals, which place the tool; --vectors applies to files placed "
+                       "by their vectors");
+  if (o.import.points == io::PathPointMeaning::Contact)
+    program.pointKind = io::ClPointKind::Contact;
+  else if (o.import.points == io::PathPointMeaning::ToolReference)
+    program.pointKind = io::ClPointKind::ToolReference;
   CsvPath out = pathFromCsv(mappedProgram(program, o.import), goal, o, o.paths.filename().string());
   out.facts.placement = "contacts";
+  out.facts.vectors = "file normals";
+  out.facts.points = pointsName(program.pointKind);
+  out.facts.convention = "the file's normals place the tool; points: " + out.facts.points +
+                         (o.import.points == io::PathPointMeaning::Contact ||
+                                  o.import.points == io::PathPointMeaning::ToolReference
+                              ? " (as chosen)"
+                              : " (as the file says)");
   contactFacts(goal, out.path, out.facts, warnings);
   return out;
 }
@@ -66,12 +93,21 @@ CsvPath fromProgram(const io::ClProgram& program, const ddf::DisplacementField& 
   params.includeRapids = o.import.keepRapids;
   params.name = o.paths.filename().string();
   params.contactSearchMm = kOffPartMm;
+  params.vectorMeaning = o.import.vectors;
+  params.pointMeaning = o.import.points;
   io::ImportedPath placed = io::placeProgram(program, o.tool, goal, params);
   warnings.insert(warnings.end(), placed.warnings.begin(), placed.warnings.end());
   CsvPath out{std::move(placed.path), std::move(placed.normals), {}, {}};
-  out.facts.placement = "program axes";
-  out.facts.pointsOffPart = placed.pointsOffPart;
-  out.facts.maxContactDistanceMm = placed.maxContactDistanceMm;
+  ImportFacts& f = out.facts;
+  f.placement = "program axes";
+  f.vectors = io::pathVectorMeaningName(placed.convention.vectors);
+  f.points = pointsName(placed.convention.points);
+  f.convention = placed.convention.reason;
+  f.pointsOffPart = placed.pointsOffPart;
+  f.maxContactDistanceMm = placed.maxAbsContactDistanceMm;
+  f.maxOnPartContactDistanceMm = placed.maxOnPartContactDistanceMm;
+  f.gougingPoses = placed.gougingPoses;
+  f.maxGougeDepthMm = placed.maxGougeDepthMm;
   return out;
 }
 
@@ -131,11 +167,16 @@ CsvPath importSimulationPath(const ddf::DisplacementField& goal, const SimulateO
   f.pointsRead = static_cast<int>(program.points.size());
   f.posesPlaced = static_cast<int>(out.path.poses.size());
   f.warnings = static_cast<int>(program.warnings.size() + warnings.size());
-  std::printf(
-      "  paths: %s in %s, %d points read, %d poses placed by %s, %d off the part, "
-      "max contact distance %.4g mm\n",
-      f.format.c_str(), f.unit.c_str(), f.pointsRead, f.posesPlaced, f.placement.c_str(),
-      f.pointsOffPart, f.maxContactDistanceMm);
+  std::printf("  paths: %s in %s, %d points read, %d poses placed by %s\n", f.format.c_str(),
+              f.unit.c_str(), f.pointsRead, f.posesPlaced, f.placement.c_str());
+  std::printf("  paths: %s\n", f.convention.c_str());
+  std::printf("  paths: %d of %d poses off the part, max |contact distance| %.4g mm",
+              f.pointsOffPart, f.posesPlaced, f.maxContactDistanceMm);
+  if (f.maxOnPartContactDistanceMm)
+    std::printf(" (%.4g mm on the part)", *f.maxOnPartContactDistanceMm);
+  if (f.gougingPoses)
+    std::printf(", %d gouging (deepest %.4g mm)", *f.gougingPoses, f.maxGougeDepthMm.value_or(0.0));
+  std::printf("\n");
   return out;
 }
 
@@ -143,9 +184,27 @@ void writeImportFacts(JsonWriter& json, const ImportFacts& facts) {
   json.key("import").beginObject();
   json.key("format").value(facts.format).key("unit").value(facts.unit);
   json.key("placement").value(facts.placement);
+  json.key("vectors").value(facts.vectors).key("points").value(facts.points);
+  json.key("convention").value(facts.convention);
   json.key("points_read").value(facts.pointsRead).key("poses_placed").value(facts.posesPlaced);
   json.key("points_off_part").value(facts.pointsOffPart);
+  json.key("points_on_part").value(facts.posesPlaced - facts.pointsOffPart);
   json.key("max_contact_distance_mm").value(facts.maxContactDistanceMm);
+  json.key("max_contact_distance_on_part_mm");
+  if (facts.maxOnPartContactDistanceMm)
+    json.value(*facts.maxOnPartContactDistanceMm);
+  else
+    json.null();
+  json.key("gouging_poses");
+  if (facts.gougingPoses)
+    json.value(*facts.gougingPoses);
+  else
+    json.null();
+  json.key("max_gouge_depth_mm");
+  if (facts.maxGougeDepthMm)
+    json.value(*facts.maxGougeDepthMm);
+  else
+    json.null();
   json.key("warnings").value(facts.warnings);
   json.endObject();
 }

@@ -35,8 +35,11 @@ io::ClProgram mappedProgram(io::ClProgram program, const ImportOptions& o);
 ///   pathFromCsv() (the tool at each cut row's contact with the row's normal and o.placement;
 ///   the file's axis only orients wheels), as before;
 /// - APT/CLDATA, ROS toolpath YAML, FANUC .ls and CSV tables without normals:
-///   io::placeProgram() with o.import (the tool follows the program's axes; link moves kept,
-///   rapid moves with keepRapids).
+///   io::placeProgram() with o.import (the vectors read as o.import.vectors, the points as
+///   o.import.points, both detected from @p goal by default; link moves kept, rapid moves
+///   with keepRapids).
+/// --points contact|tip also sets the point kind of a CSV with normals; --vectors approach or
+/// normal is refused there (its normals place the tool).
 /// Prints the warnings of the reader and the placement to stderr as
 /// "warning: FILE: line N: what".
 /// @throws IoError as readPathFile(); InvalidInput for options the route cannot honour
@@ -44,8 +47,12 @@ io::ClProgram mappedProgram(io::ClProgram program, const ImportOptions& o);
 /// --keep-rapids with a CSV), and as pathFromCsv() / placeProgram().
 CsvPath importSimulationPath(const ddf::DisplacementField& goal, const SimulateOptions& o);
 
-/// @brief Writes the "import" object of the report: format, unit, placement, points_read,
-/// poses_placed, points_off_part, max_contact_distance_mm, warnings.
+/// @brief Writes the "import" object of the report: format, unit, placement, vectors, points,
+/// convention (what was used and why), points_read, poses_placed, points_off_part,
+/// points_on_part, max_contact_distance_mm (largest |distance| over all poses),
+/// max_contact_distance_on_part_mm (over the poses on the part; null if none),
+/// gouging_poses and max_gouge_depth_mm (null where the route does not measure them),
+/// warnings.
 void writeImportFacts(JsonWriter& json, const ImportFacts& facts);
 
 }  // namespace ddfcam::cli

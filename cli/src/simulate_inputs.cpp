@@ -16,6 +16,7 @@
 #include <limits>
 
 #include "arguments.h"
+#include "run_warnings.h"
 
 namespace ddfcam::cli {
 namespace {
@@ -103,11 +104,13 @@ planning::Tool toolFromOptions(const Arguments& args, const std::string& kindNam
   return tool;
 }
 
-const std::array<OptionSpec, 32> kSpecs = {OptionSpec{"paths", '\0', true},
+const std::array<OptionSpec, 36> kSpecs = {OptionSpec{"paths", '\0', true},
                                            OptionSpec{"path-units", '\0', true},
                                            OptionSpec{"translate", '\0', true},
                                            OptionSpec{"rotate", '\0', true},
                                            OptionSpec{"keep-rapids", '\0', false},
+                                           OptionSpec{"vectors", '\0', true},
+                                           OptionSpec{"points", '\0', true},
                                            OptionSpec{"output", 'o', true},
                                            OptionSpec{"error-map", '\0', true},
                                            OptionSpec{"report", '\0', true},
@@ -134,7 +137,9 @@ const std::array<OptionSpec, 32> kSpecs = {OptionSpec{"paths", '\0', true},
                                            OptionSpec{"kp", '\0', true},
                                            OptionSpec{"wheel-speed", '\0', true},
                                            OptionSpec{"feed", '\0', true},
-                                           OptionSpec{"infeed", '\0', true}};
+                                           OptionSpec{"infeed", '\0', true},
+                                           OptionSpec{"min-coverage", '\0', true},
+                                           OptionSpec{"strict", '\0', false}};
 
 void parseProcess(const Arguments& args, SimulateOptions& o) {
   o.sampleToleranceMm = args.positiveNumber("sample-tolerance");
@@ -189,6 +194,16 @@ ImportOptions parseImport(const Arguments& args) {
   im.translateMm = triple(args, "translate");
   im.rotateDeg = triple(args, "rotate");
   im.keepRapids = args.has("keep-rapids");
+  if (const auto v = args.value("vectors")) {
+    const auto meaning = io::pathVectorMeaningFromName(*v);
+    if (!meaning) throw UsageError("--vectors " + *v + ": expected axis|approach|normal|auto");
+    im.vectors = *meaning;
+  }
+  if (const auto v = args.value("points")) {
+    const auto meaning = io::pathPointMeaningFromName(*v);
+    if (!meaning) throw UsageError("--points " + *v + ": expected contact|tip|file|auto");
+    im.points = *meaning;
+  }
   return im;
 }
 
@@ -225,6 +240,8 @@ SimulateOptions parseSimulateOptions(std::span<const std::string> words) {
   o.checkVConvexity = !args.has("no-vconvexity-check");
   parseProcess(args, o);
   o.import = parseImport(args);
+  o.minCoveragePercent = minCoverageOption(args, o.minCoveragePercent);
+  o.strict = args.has("strict");
   if (args.has("tool-file")) {
     o.tool = toolFromLibrary(args);
     o.toolKind = std::string(planning::toolKindName(o.tool.kind));

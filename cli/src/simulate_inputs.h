@@ -4,7 +4,9 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/io/cl_program.h>
+#include <ddfcam/io/imported_path.h>
 #include <ddfcam/io/tool_path_csv.h>
+#include <ddfcam/planning/coverage.h>
 #include <ddfcam/planning/path_sampling.h>
 #include <ddfcam/planning/tool.h>
 #include <ddfcam/planning/tool_orientation.h>
@@ -38,12 +40,16 @@ struct CorrectionOptions {
 };
 
 /// @brief How a path file is read and placed on the part (--path-units, --translate, --rotate,
-/// --keep-rapids).
+/// --keep-rapids, --vectors, --points).
 struct ImportOptions {
   std::optional<io::LengthUnit> unit;         ///< --path-units (default: the file's own)
   ddf::Vec3 translateMm = ddf::Vec3::Zero();  ///< --translate X,Y,Z, mm (default 0)
   ddf::Vec3 rotateDeg = ddf::Vec3::Zero();    ///< --rotate AX,AY,AZ, deg (default 0)
   bool keepRapids = false;                    ///< --keep-rapids (default false)
+  /// --vectors axis|approach|normal|auto: what the file's i,j,k vectors are (default auto).
+  io::PathVectorMeaning vectors = io::PathVectorMeaning::Auto;
+  /// --points contact|tip|file|auto: what the file's positions are (default auto).
+  io::PathPointMeaning points = io::PathPointMeaning::Auto;
 
   /// File frame -> part frame: Translation(translateMm) * Rz(AZ) * Ry(AY) * Rx(AX).
   Eigen::Isometry3d transform() const;
@@ -68,6 +74,9 @@ struct SimulateOptions {
   CorrectionOptions correction;                    ///< --correct ...
   PrestonOptions preston;                          ///< --preston ...
   ImportOptions import;                            ///< --path-units, --translate, ...
+  /// --min-coverage: warn when the tool touches less of the part, % (default 5).
+  double minCoveragePercent = planning::kLowPathCoveragePercent;
+  bool strict = false;  ///< --strict: exit code 3 when the run had any warning (default false)
 
   /// True when the passes are resampled along the feed (--sample-tolerance or --step).
   bool resample() const { return sampleToleranceMm.has_value() || stepMm.has_value(); }
@@ -80,14 +89,23 @@ SimulateOptions parseSimulateOptions(std::span<const std::string> words);
 
 /// @brief What reading and placing the path file found, for the report.
 struct ImportFacts {
-  std::string format;     ///< pathFormatName() of the file, e.g. "APT/CLDATA"
-  std::string unit;       ///< unit the file's numbers were taken in: "mm", "in" or "m"
-  std::string placement;  ///< "contacts" (CSV: --lead/--tilt at each contact) or "program axes"
-  int pointsRead = 0;     ///< points of the program read
-  int posesPlaced = 0;    ///< poses of the simulated path
-  int pointsOffPart = 0;  ///< poses whose contact lies farther than 2 mm from the part
-  double maxContactDistanceMm = 0.0;  ///< largest contact distance of the other poses, mm
-  int warnings = 0;                   ///< warnings of the reader and the placement
+  std::string format;      ///< pathFormatName() of the file, e.g. "APT/CLDATA"
+  std::string unit;        ///< unit the file's numbers were taken in: "mm", "in" or "m"
+  std::string placement;   ///< "contacts" (CSV: --lead/--tilt at each contact) or "program axes"
+  std::string vectors;     ///< vectors read as: "axis", "approach", "normal"; "file normals"
+  std::string points;      ///< points read as: "contact" or "tip"
+  std::string convention;  ///< what was used for vectors and points, and why
+  int pointsRead = 0;      ///< points of the program read
+  int posesPlaced = 0;     ///< poses of the simulated path
+  int pointsOffPart = 0;   ///< poses whose contact lies farther than 2 mm from the part
+  double maxContactDistanceMm = 0.0;  ///< largest |contact distance| over all poses, mm
+  /// Largest |contact distance| over the poses on the part, mm; empty if none is on it.
+  std::optional<double> maxOnPartContactDistanceMm;
+  /// Poses whose tool reaches into the part (io::ImportedPath::gougingPoses); empty where the
+  /// route does not measure it (CSV contacts: the tool is placed touching).
+  std::optional<int> gougingPoses;
+  std::optional<double> maxGougeDepthMm;  ///< deepest reach into the part, mm; as gougingPoses
+  int warnings = 0;                       ///< warnings of the reader and the placement
 };
 
 /// @brief The cut moves of a tool path and the contact normals.

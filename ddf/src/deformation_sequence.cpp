@@ -40,6 +40,7 @@ void validateInput(const DisplacementField& mould, const TriangleMesh& deformed,
   if (!(params.crustSafety > 0.0 && params.crustSafety <= 1.0))
     throw InvalidInput("deformation sequence: crustSafety must be in (0, 1]");
   if (params.maxStages < 1) throw InvalidInput("deformation sequence: maxStages must be >= 1");
+  if (params.stallStages < 0) throw InvalidInput("deformation sequence: stallStages must be >= 0");
 }
 
 // Unit directions of the mould's vectors (stage 0 keeps them).
@@ -105,6 +106,31 @@ Crossing findCrossing(const DisplacementField& field, double safety) {
   return crossing;
 }
 
+// Watches the splits for headway: a split that carried less than kSlowFraction of the remaining
+// deformation, after which the crossing faces fell by less than kSlowDrop, made none.
+class StallWatch {
+ public:
+  explicit StallWatch(int limit) : limit_(limit) {}
+
+  // Called for stage k with its crossing count and the previous stage's fraction; true when
+  // the last limit_ splits in a row made no headway.
+  bool stalled(int k, std::size_t crossing, double previousFraction) {
+    const bool slow =
+        k > 0 && previousFraction<kSlowFraction&& static_cast<double>(crossing)>(1.0 - kSlowDrop) *
+                     previous_;
+    slowSplits_ = slow ? slowSplits_ + 1 : 0;
+    previous_ = static_cast<double>(crossing);
+    return limit_ > 0 && crossing > 0 && slowSplits_ >= limit_;
+  }
+
+ private:
+  static constexpr double kSlowFraction = 0.25;
+  static constexpr double kSlowDrop = 0.1;
+  int limit_;
+  int slowSplits_ = 0;
+  double previous_ = 0.0;
+};
+
 std::vector<int> mergeSorted(std::vector<int> a, const std::vector<int>& b) {
   a.insert(a.end(), b.begin(), b.end());
   std::sort(a.begin(), a.end());
@@ -154,6 +180,7 @@ DeformationSequence buildDeformationSequence(const DisplacementField& mould,
   const double minFraction = 1.0 / (2.0 * params.maxStages);
   DeformationSequence sequence;
   std::vector<int> folds;
+  StallWatch watch(params.stallStages);
   for (int k = 0;; ++k) {
     reportProgress(params.progress, static_cast<double>(k) / params.maxStages);
     DeformationStage stage{makeStage(support, dirs, mould.resolution(), deformed, bvh, params,
@@ -163,7 +190,10 @@ DeformationSequence buildDeformationSequence(const DisplacementField& mould,
     Crossing crossing = findCrossing(stage.ddf, params.crustSafety);
     if (k == 0) sequence.crossingFaces = crossing.faces;
     const double t = std::min(1.0, params.crustSafety * crossing.minRatio);
-    const bool last = crossing.faces.empty() || k + 1 == params.maxStages || t >= 1.0;
+    sequence.stalled =
+        watch.stalled(k, crossing.faces.size(), k > 0 ? sequence.stages.back().fraction : 1.0);
+    const bool last =
+        crossing.faces.empty() || k + 1 == params.maxStages || t >= 1.0 || sequence.stalled;
     stage.crossingFaces = std::move(crossing.faces);
     if (last) {
       sequence.unresolvedFaces = mergeSorted(stage.crossingFaces, folds);

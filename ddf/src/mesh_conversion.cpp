@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 // ddfcam: mesh -> DDF baseline conversion (weld, manifold support, pseudo-normals, lengths).
+#include "conversion_repair.h"
+
 #include <ddfcam/ddf/crust_hash.h>
 #include <ddfcam/ddf/depth_buffer.h>
 #include <ddfcam/ddf/mesh_conversion.h>
@@ -12,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <set>
 #include <string>
 #include <unordered_map>
 
@@ -86,38 +89,65 @@ void checkInput(const TriangleMesh& mesh, const ConversionParams& params) {
                            std::to_string(v) + " of " + std::to_string(n));
 }
 
-/// Welded, non-degenerate triangles and the input index of each.
+/// Welded, non-degenerate, distinct triangles and the input index of each.
 struct Candidates {
   std::vector<std::array<int, 3>> triangles;
   std::vector<int> source;
+  std::vector<int> rep;  ///< per input vertex, its welded representative
 };
 
-Candidates weldedCandidates(const TriangleMesh& mesh, const ConversionParams& params,
-                            ConversionResult& result) {
+double weldTolerance(const TriangleMesh& mesh, const ConversionParams& params) {
+  if (params.weldToleranceMm > 0.0) return params.weldToleranceMm;
   const auto box = mesh.bounds();
   const double diag = (box[1] - box[0]).norm();
-  const double tol =
-      params.weldToleranceMm > 0.0 ? params.weldToleranceMm : std::max(1e-9 * diag, 1e-300);
-  const auto rep = weldVertices(mesh.vertices, tol);
-  for (std::size_t i = 0; i < rep.size(); ++i) result.weldedVertices += rep[i] != int(i);
+  return std::max({1e-9 * diag, params.validation.coincidentToleranceMm, 1e-300});
+}
+
+/// The corners of @p t in ascending order: equal for repeats in any order or orientation.
+std::array<int, 3> sortedCorners(std::array<int, 3> t) {
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+Candidates weldedCandidates(const TriangleMesh& mesh, const ConversionParams& params,
+                            ConversionReport& report) {
   Candidates out;
+  out.rep = weldVertices(mesh.vertices, weldTolerance(mesh, params));
+  for (std::size_t i = 0; i < out.rep.size(); ++i) report.weldedVertices += out.rep[i] != int(i);
+  std::set<std::array<int, 3>> seen;
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const auto& t = mesh.triangles[f];
-    const std::array<int, 3> w = {rep[t[0]], rep[t[1]], rep[t[2]]};
+    const std::array<int, 3> w = {out.rep[t[0]], out.rep[t[1]], out.rep[t[2]]};
     if (degenerate(w, mesh.vertices)) {
-      ++result.degenerateFaces;
+      ++report.degenerateFaces;
+      continue;
+    }
+    if (!seen.insert(sortedCorners(w)).second) {
+      ++report.duplicateFaces;
       continue;
     }
     out.triangles.push_back(w);
     out.source.push_back(static_cast<int>(f));
   }
+  report.nonManifoldEdges = detail::countNonManifoldEdges(out.triangles);
   return out;
+}
+
+/// Input vertices that are their own weld representative and no triangle refers to.
+int countUnusedVertices(const TriangleMesh& mesh, const std::vector<int>& rep) {
+  std::vector<char> used(mesh.vertices.size(), 0);
+  for (const auto& t : mesh.triangles)
+    for (int v : t) used[rep[v]] = 1;
+  int unused = 0;
+  for (std::size_t v = 0; v < rep.size(); ++v) unused += rep[v] == int(v) && !used[v];
+  return unused;
 }
 
 /// Drops the candidates OpenMesh rejects and builds the support from the used vertices only.
 SupportMesh buildSupport(const TriangleMesh& mesh, const ConversionParams& params,
                          ConversionResult& result) {
-  const Candidates cand = weldedCandidates(mesh, params, result);
+  ConversionReport& report = result.report;
+  const Candidates cand = weldedCandidates(mesh, params, report);
   const auto accepted = manifoldAcceptance(mesh.vertices, cand.triangles);
   std::vector<int> compact(mesh.vertices.size(), -1);
   std::vector<Vec3> points;
@@ -125,7 +155,7 @@ SupportMesh buildSupport(const TriangleMesh& mesh, const ConversionParams& param
   int firstDropped = -1;
   for (std::size_t i = 0; i < cand.triangles.size(); ++i) {
     if (!accepted[i]) {
-      if (result.droppedFaces++ == 0) firstDropped = cand.source[i];
+      if (report.droppedFaces++ == 0) firstDropped = cand.source[i];
       continue;
     }
     std::array<int, 3> t;
@@ -138,8 +168,11 @@ SupportMesh buildSupport(const TriangleMesh& mesh, const ConversionParams& param
     triangles.push_back(t);
     result.sourceTriangle.push_back(cand.source[i]);
   }
-  if (result.droppedFaces > 0)
-    log(LogLevel::Warning, "mesh conversion: dropped " + std::to_string(result.droppedFaces) +
+  report.unusedVertices = countUnusedVertices(mesh, cand.rep);
+  report.orphanedVertices = static_cast<int>(mesh.vertices.size()) - report.weldedVertices -
+                            report.unusedVertices - static_cast<int>(points.size());
+  if (report.droppedFaces > 0)
+    log(LogLevel::Warning, "mesh conversion: dropped " + std::to_string(report.droppedFaces) +
                                " triangles that make the support non-manifold or flip its "
                                "orientation (first: input triangle " +
                                std::to_string(firstDropped) + ")");
@@ -158,6 +191,19 @@ void fillFromInput(const TriangleMesh& mesh, const ConversionParams& params,
   const FillReport report = fillFromMesh(result.ddf, hash, mesh, fill);
   result.filledPoints = report.filled;
   result.unfilledPoints = report.missing;
+  result.report.unfilledPoints = report.missing;
+}
+
+/// Vector lengths (sec. 4.4), then the check of the constraints and its repairs.
+void chooseLengthsAndCheck(const ConversionParams& params, ConversionResult& result) {
+  VectorLengthParams lengths = detail::lengthParams(params);
+  if (params.progress) lengths.progress = [&](double x) { return params.progress(0.2 + 0.7 * x); };
+  result.lengths = chooseVectorLengths(result.ddf, lengths);
+  if (params.validateResult) detail::validateAndRepair(result, params);
+  ConversionReport& report = result.report;
+  report.shortenedVectors = result.lengths.shortenedVertices;
+  if (report.validated && !report.valid())
+    log(LogLevel::Warning, "mesh conversion: " + conversionVerdict(report));
 }
 
 }  // namespace
@@ -165,26 +211,31 @@ void fillFromInput(const TriangleMesh& mesh, const ConversionParams& params,
 ConversionResult convertMeshToDdf(const TriangleMesh& mesh, const ConversionParams& params) {
   checkInput(mesh, params);
   ConversionResult result;
+  result.report.inputVertices = static_cast<int>(mesh.vertices.size());
+  result.report.inputTriangles = static_cast<int>(mesh.triangles.size());
   reportProgress(params.progress, 0.0);
   SupportMesh support = buildSupport(mesh, params, result);
   reportProgress(params.progress, 0.1);
   auto normals = pseudoNormals(support, params.normals);
   result.repairedVertices = std::move(normals.repairedVertices);
   result.infeasibleVertices = std::move(normals.infeasibleVertices);
+  result.report.repairedDirections = static_cast<int>(result.repairedVertices.size());
+  result.report.infeasibleVertices = static_cast<int>(result.infeasibleVertices.size());
   if (!result.infeasibleVertices.empty())
     log(LogLevel::Warning, "mesh conversion: " + std::to_string(result.infeasibleVertices.size()) +
                                " vertices have no front-facing direction (first: vertex " +
                                std::to_string(result.infeasibleVertices.front()) + ")");
+  result.report.boundaryLoops = detail::countBoundaryLoops(support);
   result.ddf =
       DisplacementField(std::move(support), std::move(normals.normals), params.resolution, 0.0f);
+  result.report.supportVertices = result.ddf.vertexCount();
+  result.report.supportFaces = result.ddf.faceCount();
   reportProgress(params.progress, 0.2);
   if (!params.chooseLengths) {
     reportProgress(params.progress, 1.0);
     return result;
   }
-  VectorLengthParams lengths = params.lengths;
-  if (params.progress) lengths.progress = [&](double x) { return params.progress(0.2 + 0.7 * x); };
-  result.lengths = chooseVectorLengths(result.ddf, lengths);
+  chooseLengthsAndCheck(params, result);
   fillFromInput(mesh, params, result);
   reportProgress(params.progress, 1.0);
   return result;

@@ -236,7 +236,8 @@ VectorLengthReport chooseLengthsInPlace(DisplacementField& ddf, const VectorLeng
   initialLengths(ddf, st, maxLen, params.safety);
   ConflictTracker tracker;
   tracker.dirtyVertices.assign(ddf.vertexCount(), 1);
-  if (params.checkNonAdjacent) tracker.vertexClasses = coincidentVertexClasses(ddf);
+  if (params.checkNonAdjacent)
+    tracker.vertexClasses = coincidentVertexClasses(ddf, params.coincidentToleranceMm);
   bool facesOk = settleFaces(ddf, st, params, tracker, report);
   bool conflictsClear = !params.checkNonAdjacent;
   while (facesOk && !conflictsClear && report.conflictRounds < params.maxIterations) {

@@ -131,6 +131,19 @@ void MainWindow::createDocks() {
   plots_->raise();
   workbench_ = std::make_unique<Workbench>(
       Workbench{*document_, *jobs_, *partView_, *plots_, *console_, dialogs_.error});
+  // A converted mesh that is no valid DDF stays flagged in the status until the next open;
+  // the details are in the console, which comes to the front.
+  connect(projectActions_.get(), &ProjectActions::opened, this, [this] {
+    conversionWarning_.clear();
+    updateStatus();
+  });
+  connect(projectActions_.get(), &ProjectActions::conversionReported, this,
+          [this](const QString& verdict, bool valid) {
+            conversionWarning_ = valid ? QString() : verdict;
+            updateStatus();
+            statusBar()->showMessage(verdict, valid ? 8000 : 0);
+            if (!valid) console_->raise();
+          });
   workbench_->mouldView = mouldView_;
 }
 
@@ -333,7 +346,8 @@ void MainWindow::updateTitle() {
 }
 
 void MainWindow::updateStatus() {
-  status_->setText(QString::fromStdString(partView_->summary()));
+  const QString summary = QString::fromStdString(partView_->summary());
+  status_->setText(conversionWarning_.isEmpty() ? summary : summary + "  |  " + conversionWarning_);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

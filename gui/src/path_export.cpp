@@ -6,6 +6,7 @@
 #include <ddfcam/gui/console_dock.h>
 #include <ddfcam/gui/project_actions.h>
 #include <ddfcam/io/cl_program_builder.h>
+#include <ddfcam/io/machine_file.h>
 #include <ddfcam/io/path_file.h>
 #include <ddfcam/planning/project.h>
 
@@ -58,7 +59,7 @@ QString pathProblem(const planning::Project& project, const planning::ToolPath& 
                "G-code is written for cutters (ball-end, flat-end, torus); path %1 uses "
                "%2, which is not one. Export it as CSV or APT.")
         .arg(quoted(path.name), quoted(tool.name));
-  if (o.dialect != PathExportDialect::GCode3Axis) return {};
+  if (o.dialect != PathExportDialect::GCode3Axis || !o.machineFile.isEmpty()) return {};
   const ddf::Vec3 spindle = io::spindleAxisInToolFrame(tool.kind);
   for (std::size_t i = 0; i < path.poses.size(); ++i) {
     const ddf::Vec3 axis = (path.poses[i].pose.linear() * spindle).normalized();
@@ -118,7 +119,20 @@ io::PathWriteParams writeParams(const PathExportOptions& o) {
   params.gcode.kinematics.pair = o.dialect == PathExportDialect::GCode5AxisBC
                                      ? planning::RotaryPair::BC
                                      : planning::RotaryPair::AC;
+  if (o.format == PathExportFormat::GCode && !o.machineFile.isEmpty())
+    io::applyMachine(io::readMachineFile(toPath(o.machineFile)), params.gcode);
   return params;
+}
+
+// The problem with the machine file of G-code options, or empty.
+QString machineProblem(const PathExportOptions& o) {
+  if (o.format != PathExportFormat::GCode || o.machineFile.isEmpty()) return {};
+  try {
+    io::readMachineFile(toPath(o.machineFile));
+  } catch (const std::exception& e) {
+    return QObject::tr("The machine file cannot be used: %1").arg(QString::fromUtf8(e.what()));
+  }
+  return {};
 }
 
 }  // namespace
@@ -135,6 +149,7 @@ QString pathExportProblem(const planning::Project& project, const PathExportOpti
     if (const QString problem = pathProblem(project, path, o); !problem.isEmpty()) return problem;
   }
   if (poses == 0) return QObject::tr("The chosen paths have no poses.");
+  if (const QString problem = machineProblem(o); !problem.isEmpty()) return problem;
   if (o.filePath.isEmpty()) return QObject::tr("Choose the file to write.");
   const QFileInfo info(o.filePath);
   if (!info.absoluteDir().exists())
@@ -168,6 +183,21 @@ QStringList exportPaths(const planning::Project& project, const PathExportOption
     written << fromPath(files[i]);
   }
   return written;
+}
+
+QString exportMachineName(const PathExportOptions& o) {
+  if (o.format != PathExportFormat::GCode || o.machineFile.isEmpty()) return {};
+  try {
+    const io::MachineSetup m = io::readMachineFile(toPath(o.machineFile));
+    const bool ac = m.kinematics.pair == planning::RotaryPair::AC;
+    return QObject::tr("%1: %2/C, %3 deg to %4 deg, X Y Z as %5")
+        .arg(QString::fromStdString(m.name), ac ? "A" : "B")
+        .arg(m.kinematics.tiltMinDeg)
+        .arg(m.kinematics.tiltMaxDeg)
+        .arg(m.tcpPositions ? QObject::tr("tool tip (TCP)") : QObject::tr("machine positions"));
+  } catch (const std::exception&) {
+    return {};
+  }
 }
 
 std::pair<int, int> coordinateDecimalsRange(PathExportFormat format) {
@@ -238,6 +268,7 @@ PathExportOptions loadExportOptions(QSettings& settings) {
                                                          : io::ClPointKind::Contact;
   o.grouping = settings.value("perRegion", false).toBool() ? PathExportGrouping::FilePerRegion
                                                            : PathExportGrouping::OneFile;
+  o.machineFile = settings.value("machineFile").toString();
   settings.endGroup();
   // Settings written by another version may hold values outside the enums.
   if (o.format < PathExportFormat::Csv || o.format > PathExportFormat::GCode)
@@ -256,6 +287,7 @@ void saveExportOptions(QSettings& settings, const PathExportOptions& o) {
   settings.setValue("unit", unitKey(o.unit));
   settings.setValue("point", o.point == io::ClPointKind::ToolReference ? "tool" : "contact");
   settings.setValue("perRegion", o.grouping == PathExportGrouping::FilePerRegion);
+  settings.setValue("machineFile", o.machineFile);
   settings.endGroup();
 }
 

@@ -88,8 +88,20 @@ void PathExportDialog::buildForm(const PathExportOptions& initial) {
   auto* fileRow = new QHBoxLayout;
   fileRow->addWidget(file_, 1);
   fileRow->addWidget(browse);
+  machineFile_ = named(new QLineEdit(this), "exportMachineFile");
+  machineFile_->setPlaceholderText(tr("none: the dialect's generic table"));
+  machineFile_->setToolTip(
+      tr("A machine file (JSON) with the rotary axes, their directions, pivot, limits, "
+         "preferred solution and TCP; samples in resources/machines"));
+  machineBrowse_ = named(new QPushButton(tr("Browse..."), this), "exportMachineBrowse");
+  machineName_ = named(new QLabel(this), "exportMachineName");
+  auto* machineRow = new QHBoxLayout;
+  machineRow->addWidget(machineFile_, 1);
+  machineRow->addWidget(machineBrowse_);
   form->addRow(tr("Format:"), format_);
   form->addRow(tr("Dialect:"), dialect_);
+  form->addRow(tr("Machine:"), machineRow);
+  form->addRow(QString(), machineName_);
   form->addRow(tr("Coordinate decimals:"), coordinateDecimals_);
   form->addRow(tr("Vector decimals:"), vectorDecimals_);
   form->addRow(tr("Unit:"), unit_);
@@ -107,6 +119,7 @@ void PathExportDialog::buildForm(const PathExportOptions& initial) {
   layout->addWidget(problem_);
   layout->addWidget(buttons_);
   connect(browse, &QPushButton::clicked, this, &PathExportDialog::browse);
+  connect(machineBrowse_, &QPushButton::clicked, this, &PathExportDialog::browseMachine);
   connectSignals();
 }
 
@@ -148,6 +161,7 @@ void PathExportDialog::connectSignals() {
     connect(box, &QSpinBox::valueChanged, this, &PathExportDialog::refresh);
   connect(paths_, &QListWidget::itemChanged, this, &PathExportDialog::refresh);
   connect(file_, &QLineEdit::textChanged, this, &PathExportDialog::refresh);
+  connect(machineFile_, &QLineEdit::textChanged, this, &PathExportDialog::refresh);
 }
 
 void PathExportDialog::fillDialects(PathExportFormat format) {
@@ -179,6 +193,7 @@ void PathExportDialog::showOptions(const PathExportOptions& o) {
   point_->setEnabled(o.format == PathExportFormat::Csv);
   grouping_->setCurrentIndex(grouping_->findData(int(o.grouping)));
   file_->setText(o.filePath);
+  machineFile_->setText(o.machineFile);
   updating_ = false;
 }
 
@@ -195,6 +210,7 @@ PathExportOptions PathExportDialog::options() const {
   for (int i = 0; i < paths_->count(); ++i)
     if (paths_->item(i)->checkState() == Qt::Checked) o.paths.push_back(i);
   o.filePath = file_->text().trimmed();
+  o.machineFile = machineFile_->text().trimmed();
   return o;
 }
 
@@ -204,7 +220,16 @@ QString PathExportDialog::problem() const {
 
 void PathExportDialog::refresh() {
   if (updating_) return;
-  const QString text = pathExportProblem(project_, options());
+  const PathExportOptions o = options();
+  const bool gcode = o.format == PathExportFormat::GCode;
+  machineFile_->setEnabled(gcode);
+  machineBrowse_->setEnabled(gcode);
+  // With a machine file the dialect's generic table is not used.
+  dialect_->setEnabled(o.format != PathExportFormat::Csv && (!gcode || o.machineFile.isEmpty()));
+  const QString machine = gcode ? exportMachineName(o) : QString();
+  machineName_->setText(machine);
+  machineName_->setVisible(!machine.isEmpty());
+  const QString text = pathExportProblem(project_, o);
   problem_->setText(text);
   problem_->setVisible(!text.isEmpty());
   buttons_->button(QDialogButtonBox::Ok)->setEnabled(text.isEmpty());
@@ -217,6 +242,12 @@ void PathExportDialog::browse() {
       this, tr("Export tool paths"), o.filePath,
       tr("%1 files (*.%2);;All files (*)").arg(suffix.toUpper(), suffix));
   if (!path.isEmpty()) file_->setText(path);
+}
+
+void PathExportDialog::browseMachine() {
+  const QString path = QFileDialog::getOpenFileName(this, tr("Machine file"), machineFile_->text(),
+                                                    tr("Machine files (*.json);;All files (*)"));
+  if (!path.isEmpty()) machineFile_->setText(path);
 }
 
 }  // namespace ddfcam::gui

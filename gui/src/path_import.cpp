@@ -30,6 +30,9 @@
 #include <memory>
 #include <numbers>
 #include <string_view>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 namespace ddfcam::gui {
 
@@ -97,6 +100,61 @@ QComboBox* toolChoice(const PathImportRequest& request, int toolIndex, QWidget* 
   return tool;
 }
 
+// The console line of an import: poses, the meanings used and why, distances that agree.
+QString importedSummary(const QString& file, const io::ImportedPath& imported) {
+  const int poses = static_cast<int>(imported.path.poses.size());
+  const QString onPart =
+      imported.maxOnPartContactDistanceMm
+          ? QObject::tr("%1 mm").arg(*imported.maxOnPartContactDistanceMm, 0, 'g', 4)
+          : QObject::tr("none on the part");
+  return QObject::tr(
+             "Imported path '%1' from %2: %3 poses; %4; %5 of %3 off the part, largest "
+             "|contact distance| %6 mm (on the part: %7), %8 gouging")
+      .arg(QString::fromStdString(imported.path.name), QFileInfo(file).fileName())
+      .arg(poses)
+      .arg(QString::fromStdString(imported.convention.reason))
+      .arg(imported.pointsOffPart)
+      .arg(imported.maxAbsContactDistanceMm, 0, 'g', 4)
+      .arg(onPart)
+      .arg(imported.gougingPoses);
+}
+
+// Vector (or point) meanings in a combo box named @p name, data = the enum value.
+template <typename Meaning>
+QComboBox* meaningChoice(const std::vector<std::pair<Meaning, QString>>& items, Meaning initial,
+                         const char* name, QWidget* parent) {
+  auto* box = new QComboBox(parent);
+  box->setObjectName(name);
+  for (const auto& [meaning, text] : items) box->addItem(text, int(meaning));
+  box->setCurrentIndex(std::max(0, box->findData(int(initial))));
+  return box;
+}
+
+// What the file's vectors (disabled for 3-axis programs) and points are, auto by default.
+std::pair<QComboBox*, QComboBox*> meaningChoices(const PathImportRequest& request,
+                                                 const PathImportOptions& initial,
+                                                 QWidget* parent) {
+  using V = io::PathVectorMeaning;
+  auto* vectors =
+      meaningChoice<V>({{V::Auto, QObject::tr("detect from the part")},
+                        {V::ToolAxis, QObject::tr("tool axis (tip to holder)")},
+                        {V::ApproachDirection, QObject::tr("approach direction (into the part)")},
+                        {V::SurfaceNormal, QObject::tr("surface normal (out of the part)")}},
+                       initial.vectors, "importVectors", parent);
+  vectors->setEnabled(request.program.multiAxis());
+  using P = io::PathPointMeaning;
+  const QString declared = request.program.pointKind == io::ClPointKind::Contact
+                               ? QObject::tr("as the file says (contacts)")
+                               : QObject::tr("as the file says (tool tips or centres)");
+  auto* points =
+      meaningChoice<P>({{P::Auto, QObject::tr("detect from the part")},
+                        {P::Declared, declared},
+                        {P::Contact, QObject::tr("contact points on the surface")},
+                        {P::ToolReference, QObject::tr("tool tips (wheel or ball centres)")}},
+                       initial.points, "importPoints", parent);
+  return {vectors, points};
+}
+
 // Places the program and adds the path (and a new tool) as one undo step.
 void placeAndAdd(const QString& file, const io::ClProgram& program,
                  const PathImportOptions& options, Document& document, ConsoleDock* console) {
@@ -118,19 +176,13 @@ void placeAndAdd(const QString& file, const io::ClProgram& program,
   params.includeRapids = options.includeRapids;
   params.name = options.name.trimmed().toStdString();
   params.toolIndex = newTool ? static_cast<int>(project.tools.size()) : options.toolIndex;
+  params.vectorMeaning = options.vectors;
+  params.pointMeaning = options.points;
   io::ImportedPath imported = io::placeProgram(program, tool, *project.part, params);
   logMessages(console, file, imported.warnings);
-  const std::size_t poses = imported.path.poses.size();
-  const QString name = QString::fromStdString(imported.path.name);
+  const QString summary = importedSummary(file, imported);
   document.push(std::make_unique<AddPathCommand>(document, std::move(imported.path), newTool));
-  if (console)
-    console->appendMessage(LogLevel::Info,
-                           QObject::tr("Imported path '%1' from %2: %3 poses, %4 off the part, "
-                                       "largest contact distance %5 mm")
-                               .arg(name, QFileInfo(file).fileName())
-                               .arg(poses)
-                               .arg(imported.pointsOffPart)
-                               .arg(imported.maxContactDistanceMm, 0, 'g', 4));
+  if (console) console->appendMessage(LogLevel::Info, summary);
 }
 
 }  // namespace
@@ -225,6 +277,9 @@ PathImportDialog::PathImportDialog(const PathImportRequest& request,
                        "importRotation", this));
   tool_ = toolChoice(request, initial.toolIndex, this);
   form->addRow(tr("Tool:"), tool_);
+  std::tie(vectors_, points_) = meaningChoices(request, initial, this);
+  form->addRow(tr("The file's vectors are:"), vectors_);
+  form->addRow(tr("The file's points are:"), points_);
   rapids_ = new QCheckBox(tr("keep rapid moves as poses"), this);
   rapids_->setObjectName("importRapids");
   rapids_->setChecked(initial.includeRapids);
@@ -252,6 +307,8 @@ PathImportOptions PathImportDialog::options() const {
   o.toolIndex = tool_->count() > 0 ? tool_->currentData().toInt() : 0;
   o.includeRapids = rapids_->isChecked();
   o.name = name_->text();
+  o.vectors = static_cast<io::PathVectorMeaning>(vectors_->currentData().toInt());
+  o.points = static_cast<io::PathPointMeaning>(points_->currentData().toInt());
   return o;
 }
 

@@ -2,6 +2,7 @@
 // ddfcam gui: ProjectActions, File menu operations on the document.
 #include <ddfcam/gui/project_actions.h>
 
+#include <ddfcam/ddf/conversion_report.h>
 #include <ddfcam/error.h>
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/job_runner.h>
@@ -9,10 +10,12 @@
 #include <ddfcam/gui/recovery_manager.h>
 #include <ddfcam/io/project_file.h>
 #include <ddfcam/io/project_loader.h>
+#include <ddfcam/log.h>
 #include <ddfcam/planning/demo_project.h>
 
 #include <QDateTime>
 #include <QFileInfo>
+#include <QPointer>
 
 #include <filesystem>
 #include <memory>
@@ -63,14 +66,18 @@ bool ProjectActions::startLoad(const QString& title, const QString& path,
                                std::function<void(const QString&)> onLoaded) {
   Document* document = &document_;
   const bool isProject = !path.isEmpty() && io::isProjectFile(toPath(path));
-  JobWork work = [path, isProject, document, onLoaded](const ProgressCallback& progress) {
+  const QPointer<ProjectActions> self(this);
+  JobWork work = [path, isProject, document, onLoaded, self](const ProgressCallback& progress) {
     io::LoadPartParams params;
     params.progress = progress;
+    auto report = std::make_shared<io::LoadPartReport>();
     auto project = std::make_shared<planning::Project>(
-        path.isEmpty() ? planning::demoProject() : io::openProject(toPath(path), params));
-    return std::function<void()>([project, path, isProject, document, onLoaded] {
+        path.isEmpty() ? planning::demoProject()
+                       : io::openProject(toPath(path), params, report.get()));
+    return std::function<void()>([project, report, path, isProject, document, onLoaded, self] {
       document->reset(std::move(*project), isProject ? path : QString());
       onLoaded(path);
+      if (report->converted && self) self->announceConversion(path, report->conversion);
     });
   };
   if (!jobs_.start(title, std::move(work))) {
@@ -81,6 +88,22 @@ bool ProjectActions::startLoad(const QString& title, const QString& path,
     return false;
   }
   return true;
+}
+
+void ProjectActions::announceConversion(const QString& path, const ddf::ConversionReport& report) {
+  const std::string file = QFileInfo(path).fileName().toStdString();
+  const std::string verdict = file + ": " + ddf::conversionVerdict(report);
+  ddfcam::log(LogLevel::Info, "converted " + file + ": " + std::to_string(report.inputVertices) +
+                                  " vertices, " + std::to_string(report.inputTriangles) +
+                                  " triangles -> support of " +
+                                  std::to_string(report.supportVertices) + " vertices, " +
+                                  std::to_string(report.supportFaces) + " faces");
+  for (const std::string& line : ddf::conversionRepairLines(report))
+    ddfcam::log(LogLevel::Info, "  repaired: " + line);
+  ddfcam::log(report.valid() ? LogLevel::Info : LogLevel::Warning, verdict);
+  for (const std::string& line : ddf::conversionProblemLines(report))
+    ddfcam::log(LogLevel::Warning, "  " + line);
+  emit conversionReported(QString::fromStdString(verdict), report.valid());
 }
 
 bool ProjectActions::save() {

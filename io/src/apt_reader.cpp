@@ -94,6 +94,12 @@ class AptParser {
     }
     for (auto& c : comments) program_.comments.push_back(std::move(c.text));
     if (circle_) fail(circle_->line, "CIRCLE is not followed by a GOTO");
+    restoreFirstTool();
+    if (program_.points.empty()) {
+      throw IoError(lexer_.sourceName() +
+                    ": no GOTO or FROM record: the file holds no tool motion (is it the whole "
+                    "CL file, or only its header?)");
+    }
     return std::move(program_);
   }
 
@@ -124,13 +130,15 @@ class AptParser {
       return;
     }
     const double per = millimetresPer(unit_);
+    if (m == "LOADTL" || m == "CUTTER" || m == "TLDATA" || m == "TOOL PATH") toolLine_ = r.line;
     if (m == "LOADTL") return detail::readLoadTool(lexer_, r, program_);
     if (m == "CUTTER") return detail::readCutter(lexer_, r, per, program_);
     if (m == "TLDATA") return detail::readToolData(lexer_, r, per, program_);
     if (m == "SPINDL") return detail::readSpindle(lexer_, r, program_);
     if (m == "COOLNT") return detail::readCoolant(r, program_);
     if (m == "MSYS") return detail::readMachineSystem(lexer_, r, program_);
-    if (m == "MULTAX" || m == "END" || m == "END-OF-PATH") return;
+    if (m == "MULTAX") return multiAxis(r);
+    if (m == "END" || m == "END-OF-PATH") return;
     unknown(r);
   }
 
@@ -174,7 +182,10 @@ class AptParser {
     }
     ClPoint p;
     p.positionMm = positionMm(r, v, 0);
-    if (v.size() == 6) p.axis = direction(r, v, 3, "tool axis");
+    // The tool axis is modal: a 3-value GOTO keeps the axis of the last 6-value one (until
+    // MULTAX/OFF), so a tilted tool stays tilted.
+    if (v.size() == 6) axis_ = direction(r, v, 3, "tool axis");
+    p.axis = axis_;
     p.sourceLine = r.line;
     const bool rapid = from || rapid_;
     rapid_ = false;
@@ -225,10 +236,40 @@ class AptParser {
     }
   }
 
+  /// The tool the records so far describe (LOADTL, CUTTER, TLDATA, TOOL PATH).
+  ClToolChange currentTool() const {
+    return {program_.points.size(), program_.toolNumber, program_.toolName, program_.cutter,
+            toolLine_};
+  }
+
+  static bool sameTool(const ClToolChange& a, const ClToolChange& b) {
+    return a.toolNumber == b.toolNumber && a.toolName == b.toolName && a.cutter == b.cutter;
+  }
+
+  /// A tool record between motions is a tool change: recorded where the next point starts.
+  void noteTool() {
+    ClToolChange now = currentTool();
+    if (!firstTool_) {
+      firstTool_ = now;
+    } else if (!sameTool(now, lastTool_)) {
+      program_.toolChanges.push_back(now);
+    }
+    lastTool_ = std::move(now);
+  }
+
+  /// The program's header fields describe the first tool; later ones are in toolChanges.
+  void restoreFirstTool() {
+    if (!firstTool_) return;
+    program_.toolNumber = firstTool_->toolNumber;
+    program_.toolName = firstTool_->toolName;
+    program_.cutter = firstTool_->cutter;
+  }
+
   void add(ClPoint p, bool rapid) {
     if (program_.points.size() >= kMaxPoints) {
       fail(p.sourceLine, "more than 50000000 points; the program is too large");
     }
+    noteTool();
     if (rapid) {
       p.move = MoveKind::Rapid;
       p.feedMmPerMin = 0.0;
@@ -249,6 +290,12 @@ class AptParser {
     last_ = p.positionMm;
     havePoint_ = true;
     program_.points.push_back(std::move(p));
+  }
+
+  /// MULTAX/OFF ends multi-axis motion: later 3-value GOTOs have the vertical axis again.
+  void multiAxis(const AptRecord& r) {
+    const auto values = detail::splitValues(r.rest);
+    if (!values.empty() && detail::upperAscii(values[0]) == "OFF") axis_.reset();
   }
 
   void feed(const AptRecord& r) {
@@ -300,6 +347,10 @@ class AptParser {
   int pointInPath_ = 0;
   bool havePoint_ = false;
   ddf::Vec3 last_ = ddf::Vec3::Zero();
+  std::optional<ClToolChange> firstTool_;  // the tool of the first point
+  ClToolChange lastTool_;                  // the tool of the last point
+  int toolLine_ = 0;                       // line of the last tool record
+  std::optional<ddf::Vec3> axis_;          // tool axis in force (modal), empty: vertical / 3-axis
   std::optional<detail::AptCircle> circle_;
   std::size_t arcPoints_ = 0;  // points interpolated for CIRCLE records so far
   std::set<std::string> unknownWords_;

@@ -135,14 +135,13 @@ std::string partText(const std::string& name, int maxColumns) {
   return "PARTNO " + text.substr(0, static_cast<std::size_t>(maxColumns) - 7);
 }
 
-void writeHeader(const ClProgram& program, const AptWriteParams& params, AptLines& lines) {
+/// CUTTER (when known) and LOADTL of one tool.
+void writeTool(const std::optional<ClCutter>& cutter, int toolNumber, const AptWriteParams& params,
+               AptLines& lines) {
   const double per = millimetresPer(params.unit);
   const int cd = params.coordinateDecimals;
-  lines.plain(partText(program.partName, params.maxColumns));
-  lines.plain(params.unit == LengthUnit::Inch ? "UNITS/INCHES" : "UNITS/MM");
-  for (const std::string& c : program.comments) lines.comment(c);
-  if (program.cutter) {
-    const ClCutter& c = *program.cutter;
+  if (cutter) {
+    const ClCutter& c = *cutter;
     const std::array<double, 7> values{
         c.diameterMm / per, c.cornerRadiusMm / per, c.eMm / per, c.fMm / per, c.alphaDeg,
         c.betaDeg,          c.heightMm / per};
@@ -155,7 +154,15 @@ void writeHeader(const ClProgram& program, const AptWriteParams& params, AptLine
     }
     lines.record("CUTTER/", texts);
   }
-  lines.plain("LOADTL/" + std::to_string(program.toolNumber));
+  lines.plain("LOADTL/" + std::to_string(toolNumber));
+}
+
+void writeHeader(const ClProgram& program, const AptWriteParams& params, AptLines& lines) {
+  const int cd = params.coordinateDecimals;
+  lines.plain(partText(program.partName, params.maxColumns));
+  lines.plain(params.unit == LengthUnit::Inch ? "UNITS/INCHES" : "UNITS/MM");
+  for (const std::string& c : program.comments) lines.comment(c);
+  writeTool(program.cutter, program.toolNumber, params, lines);
   if (program.spindleRpm > 0.0) {
     lines.record("SPINDL/",
                  {fixed(program.spindleRpm, cd), program.spindleClockwise ? "CLW" : "CCLW"});
@@ -169,9 +176,13 @@ void writeMotion(const ClProgram& program, const AptWriteParams& params, AptLine
   const int cd = params.coordinateDecimals;
   const std::string feedWord = params.unit == LengthUnit::Inch ? "IPM" : "MMPM";
   std::string lastFeed;
+  auto change = program.toolChanges.begin();
   for (std::size_t k = 0; k < program.points.size(); ++k) {
     const ClPoint& p = program.points[k];
     checkPoint(p, k, per);
+    for (; change != program.toolChanges.end() && change->firstPoint <= k; ++change) {
+      if (change->firstPoint == k) writeTool(change->cutter, change->toolNumber, params, lines);
+    }
     if (p.move == MoveKind::Rapid) {
       lines.plain("RAPID");
     } else if (p.feedMmPerMin > 0.0) {

@@ -3,6 +3,7 @@
 #include "file_access.h"
 
 #include <ddfcam/error.h>
+#include <ddfcam/io/cutter_tool.h>
 #include <ddfcam/io/gcode_writer.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <numbers>
 #include <string_view>
 #include <vector>
 
@@ -137,33 +139,74 @@ ddf::Vec3 tipOf(const ClProgram& program, std::size_t i, const ddf::Vec3& axis,
   return p.positionMm + corner * n + (big - corner) * h - corner * axis;
 }
 
-/// Unit tool axis of point @p i (part frame): the file's, or +Z when it gives none.
-ddf::Vec3 axisOf(const ClProgram& program, std::size_t i, Mode mode) {
+/// Why a tilted axis cannot go into a 3-axis program, and what would take it.
+std::string threeAxisAdvice(const ddf::Vec3& axis) {
+  const double tiltDeg = std::acos(std::clamp(axis.z(), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+  const planning::TableKinematics generic;
+  if (tiltDeg <= generic.tiltMaxDeg) {
+    return " is tilted by " + fixed(tiltDeg, 3) +
+           " deg; a 3-axis program needs +Z: write it for a 5-axis machine (a machine file, or "
+           "the generic A/C or B/C table)";
+  }
+  return " is tilted by " + fixed(tiltDeg, 3) +
+         " deg (the tool points up at the part from below); neither a 3-axis machine nor a "
+         "table tilting up to 120 deg reaches it: turn the part over (fixture it the other way "
+         "up, or transform the program) so that the tool comes from above";
+}
+
+/// Unit tool axis of point @p i (part frame): the file's, else the axis in force @p inForce
+/// (the last one given: a point without an axis keeps it, as APT's GOTO does), else +Z.
+ddf::Vec3 axisOf(const ClProgram& program, std::size_t i, Mode mode,
+                 std::optional<ddf::Vec3>& inForce) {
   const ClPoint& p = program.points[i];
-  if (!p.axis) return ddf::Vec3::UnitZ();
   const std::string where = pointName(program, i);
-  const ddf::Vec3 a = unitOf(*p.axis, "tool axis", where);
+  if (p.axis) inForce = unitOf(*p.axis, "tool axis", where);
+  const ddf::Vec3 a = inForce.value_or(ddf::Vec3::UnitZ());
   if (mode == Mode::ThreeAxis && (a - ddf::Vec3::UnitZ()).norm() > kVerticalTolerance) {
-    throw InvalidInput(where + ": tool axis " + vecText(a) +
-                       " is tilted; a 3-axis program needs +Z (write it as 5-axis)");
+    throw InvalidInput(where + ": tool axis " + vecText(a) + threeAxisAdvice(a));
   }
   return a;
 }
 
-/// Machine positions of every point, in program order (mm, degrees).
+/// Radii of the tool cutting point @p i: @p tool's, or after a tool change that tool's CUTTER.
+/// Only contact programs need them; tool reference programs pass through.
+std::pair<double, double> radiiAt(const ClProgram& program, const ClToolChange* change,
+                                  const std::pair<double, double>& first) {
+  if (!change || program.pointKind == ClPointKind::ToolReference) return first;
+  if (!change->cutter) {
+    throw InvalidInput("G-code: tool T" + std::to_string(change->toolNumber) +
+                       " has no CUTTER record, so the tool tips of the contact points it cuts "
+                       "cannot be computed; give every tool a CUTTER");
+  }
+  return cutterRadii(toolFromCutter(*change->cutter, change->toolName));
+}
+
+/// The tool change starting at point @p i, if any (changes in order of firstPoint).
+const ClToolChange* changeAt(const ClProgram& program, std::size_t i) {
+  for (const ClToolChange& c : program.toolChanges)
+    if (c.firstPoint == i) return &c;
+  return nullptr;
+}
+
+/// Positions of every point as written, in program order (mm, degrees): machine X Y Z from the
+/// kinematics, or with tcpPositions the tip in the part frame.
 std::vector<planning::MachinePose> machinePoses(const ClProgram& program,
                                                 const planning::Tool& tool,
                                                 const GCodeWriteParams& params) {
-  const std::pair<double, double> radii = cutterRadii(tool);
+  const std::pair<double, double> firstRadii = cutterRadii(tool);
+  std::pair<double, double> radii = firstRadii;
   std::vector<planning::MachinePose> poses;
   poses.reserve(program.points.size());
   planning::MachinePose previous = params.startPose;
+  std::optional<ddf::Vec3> inForce;
   for (std::size_t i = 0; i < program.points.size(); ++i) {
     const ClPoint& p = program.points[i];
     if (!p.positionMm.allFinite() || !std::isfinite(p.feedMmPerMin) || p.feedMmPerMin < 0.0) {
       throw InvalidInput(pointName(program, i) + ": position or feed is not finite (or < 0)");
     }
-    const ddf::Vec3 axis = axisOf(program, i, params.mode);
+    if (const ClToolChange* change = changeAt(program, i))
+      radii = radiiAt(program, change, firstRadii);
+    const ddf::Vec3 axis = axisOf(program, i, params.mode, inForce);
     const ddf::Vec3 tip = tipOf(program, i, axis, radii);
     if (params.mode == Mode::ThreeAxis) {
       poses.push_back({tip, 0.0, 0.0});
@@ -172,8 +215,9 @@ std::vector<planning::MachinePose> machinePoses(const ClProgram& program,
     const planning::InverseKinematicsResult r =
         planning::inverseKinematics(params.kinematics, tip, axis, previous);
     if (!r.pose) throw InvalidInput(pointName(program, i) + ": " + r.reason);
-    poses.push_back(*r.pose);
     previous = *r.pose;
+    poses.push_back(*r.pose);
+    if (params.tcpPositions) poses.back().xyzMm = tip;
   }
   return poses;
 }
@@ -212,6 +256,38 @@ std::string axisWords(const planning::MachinePose& pose, const GCodeWriteParams&
   return s;
 }
 
+/// T word of a program's tool number: G-code has no tool 0, which becomes T1.
+int toolNumberOf(int programTool) {
+  return std::max(1, programTool);
+}
+
+/// @p text with every "{tool}" replaced by @p number.
+std::string withTool(std::string text, int number) {
+  for (std::size_t at = text.find("{tool}"); at != std::string::npos; at = text.find("{tool}"))
+    text.replace(at, 6, std::to_string(number));
+  return text;
+}
+
+/// Tool change to @p number: T M6, the length offset and the control's TCP block if any.
+void toolBlocks(Blocks& out, int number, const GCodeWriteParams& p) {
+  const std::string text = std::to_string(number);
+  out.block(std::string("T").append(text).append(" M6"));
+  if (p.toolLengthOffset && p.tcpOnBlock.empty()) out.block(std::string("G43 H").append(text));
+  if (!p.tcpOnBlock.empty()) out.block(withTool(p.tcpOnBlock, number));
+}
+
+/// Spindle on (S M3|M4) and coolant (M8): at the start and again after every tool change,
+/// since M6 stops the spindle.
+void spindleBlocks(Blocks& out, const ClProgram& program, const GCodeWriteParams& p) {
+  const double rpm = p.spindleRpm > 0.0 ? p.spindleRpm
+                     : program.spindleRpm > 0.0 && std::isfinite(program.spindleRpm)
+                         ? program.spindleRpm
+                         : 6000.0;
+  out.block(
+      std::string("S").append(fixed(rpm, 1)).append(program.spindleClockwise ? " M3" : " M4"));
+  if (program.coolant) out.block("M8");
+}
+
 void writeHeader(Blocks& out, const ClProgram& program, const planning::Tool& tool,
                  const GCodeWriteParams& p) {
   out.raw("%");
@@ -227,21 +303,18 @@ void writeHeader(Blocks& out, const ClProgram& program, const planning::Tool& to
     out.comment("pivot " + vecText(p.kinematics.pivotMm) + " mm, C offset " +
                 vecText(p.kinematics.rotaryOffsetMm) + " mm");
   }
+  if (!p.machineName.empty()) out.comment("machine: " + p.machineName);
+  if (p.tcpPositions) out.comment("X Y Z: tool tip in the part frame (tool centre point control)");
+  for (const ClToolChange& c : program.toolChanges) {
+    out.comment("tool change at point " + std::to_string(c.firstPoint) + ": T" +
+                std::to_string(toolNumberOf(c.toolNumber)) + " " + c.toolName);
+  }
   for (const std::string& c : program.comments) out.comment("note: " + c);
   const bool inch = p.unit == LengthUnit::Inch;
   out.block(std::string("G17 ") + (inch ? "G20" : "G21") + " G40 G49 G80 G90 " +
             (p.inverseTimeFeed ? "G93" : "G94"));
-  const int toolNumber = p.toolNumber >= 1 ? p.toolNumber : std::max(1, program.toolNumber);
-  const std::string number = std::to_string(toolNumber);
-  out.block(std::string("T").append(number).append(" M6"));
-  if (p.toolLengthOffset) out.block(std::string("G43 H").append(number));
-  const double rpm = p.spindleRpm > 0.0 ? p.spindleRpm
-                     : program.spindleRpm > 0.0 && std::isfinite(program.spindleRpm)
-                         ? program.spindleRpm
-                         : 6000.0;
-  out.block(
-      std::string("S").append(fixed(rpm, 1)).append(program.spindleClockwise ? " M3" : " M4"));
-  if (program.coolant) out.block("M8");
+  toolBlocks(out, p.toolNumber >= 1 ? p.toolNumber : toolNumberOf(program.toolNumber), p);
+  spindleBlocks(out, program, p);
 }
 
 /// F value of a G1 move from @p from to @p to at @p feedMmPerMin: per minute in the output
@@ -249,9 +322,10 @@ void writeHeader(Blocks& out, const ClProgram& program, const planning::Tool& to
 std::string feedValue(double feedMmPerMin, const planning::MachinePose& from,
                       const planning::MachinePose& to, const GCodeWriteParams& p) {
   if (!p.inverseTimeFeed) return fixed(feedMmPerMin / millimetresPer(p.unit), p.decimals);
-  const double distance = (planning::forwardKinematics(p.kinematics, to).tipMm -
-                           planning::forwardKinematics(p.kinematics, from).tipMm)
-                              .norm();
+  const double distance = p.tcpPositions ? (to.xyzMm - from.xyzMm).norm()
+                                         : (planning::forwardKinematics(p.kinematics, to).tipMm -
+                                            planning::forwardKinematics(p.kinematics, from).tipMm)
+                                               .norm();
   const double turn = std::abs(to.tiltDeg - from.tiltDeg) + std::abs(to.rotaryDeg - from.rotaryDeg);
   // A move that goes nowhere gets a nominal 1e-4 minutes; RS274 needs some F > 0.
   const double minutes = distance > 1e-6 ? distance / feedMmPerMin
@@ -262,6 +336,18 @@ std::string feedValue(double feedMmPerMin, const planning::MachinePose& from,
   if (text.find_first_not_of("0.") == std::string::npos)
     text = fixed(std::pow(10.0, -p.decimals), p.decimals);
   return text;
+}
+
+/// Retracts to the safe plane, changes to the tool of @p change and comes down to @p above,
+/// the safe plane over its first point, as at the start.
+void changeTool(Blocks& out, const ClProgram& program, const ClToolChange& change,
+                const planning::MachinePose& above, const GCodeWriteParams& p) {
+  if (!p.tcpOffBlock.empty()) out.block(p.tcpOffBlock);
+  out.block("G0 Z" + fixed(above.xyzMm.z() / millimetresPer(p.unit), p.decimals));
+  out.comment("tool: T" + std::to_string(toolNumberOf(change.toolNumber)) + " " + change.toolName);
+  toolBlocks(out, toolNumberOf(change.toolNumber), p);
+  spindleBlocks(out, program, p);
+  out.block("G0 " + axisWords(above, p));
 }
 
 void writeMotion(Blocks& out, const ClProgram& program,
@@ -278,13 +364,20 @@ void writeMotion(Blocks& out, const ClProgram& program,
   std::string lastFeed;
   for (std::size_t i = 0; i < poses.size(); ++i) {
     const ClPoint& point = program.points[i];
+    if (const ClToolChange* change = changeAt(program, i); change && i > 0) {
+      above = poses[i];
+      above.xyzMm.z() = safeZ;
+      changeTool(out, program, *change, above, p);
+      lastFeed.clear();
+    }
     if (point.move == planning::MoveKind::Rapid) {
       out.block("G0 " + axisWords(poses[i], p));
       continue;
     }
     const double feed = point.feedMmPerMin > 0.0 ? point.feedMmPerMin : p.defaultFeedMmPerMin;
     std::string line = "G1 " + axisWords(poses[i], p);
-    const std::string feedText = feedValue(feed, i == 0 ? above : poses[i - 1], poses[i], p);
+    const bool fromAbove = i == 0 || (changeAt(program, i) != nullptr);
+    const std::string feedText = feedValue(feed, fromAbove ? above : poses[i - 1], poses[i], p);
     if (feedText != lastFeed || p.inverseTimeFeed) line += " F" + feedText;
     lastFeed = feedText;
     out.block(line);
@@ -292,6 +385,7 @@ void writeMotion(Blocks& out, const ClProgram& program,
   planning::MachinePose retract = poses.back();
   retract.xyzMm.z() = safeZ;
   out.block("G0 " + axisWords(retract, p));
+  if (!p.tcpOffBlock.empty()) out.block(p.tcpOffBlock);
 }
 
 }  // namespace

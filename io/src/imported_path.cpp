@@ -19,6 +19,7 @@
 #include <tuple>
 
 #include "imported_path_contacts.h"
+#include "imported_path_convention.h"
 
 namespace ddfcam::io {
 namespace {
@@ -26,17 +27,15 @@ namespace {
 using ddf::Vec3;
 using detail::contactOf;
 using detail::coreSamples;
+using detail::feedAt;
+using detail::isCutter;
+using detail::isWheel;
 using detail::PartSurface;
+using detail::perpendicularTo;
+using detail::PlacedPoint;
 using detail::PoseContact;
+using detail::tangentialFeed;
 using planning::ToolKind;
-
-bool isWheel(ToolKind kind) {
-  return kind == ToolKind::CylinderRoll || kind == ToolKind::BeltContactWheel;
-}
-
-bool isCutter(ToolKind kind) {
-  return kind == ToolKind::BallEnd || kind == ToolKind::FlatEnd || kind == ToolKind::TorusCutter;
-}
 
 Vec3 spindleInToolFrame(ToolKind kind) {
   return isCutter(kind) ? Vec3::UnitZ() : Vec3::UnitX();
@@ -61,14 +60,6 @@ Vec3 unitOrThrow(const Vec3& v, const std::string& what) {
   return v / n;
 }
 
-/// The world axis least aligned with @p a made perpendicular to it (ties prefer z, then x).
-Vec3 perpendicularTo(const Vec3& a) {
-  Vec3 best = Vec3::UnitZ();
-  for (const Vec3& e : {Vec3(Vec3::UnitX()), Vec3(Vec3::UnitY())})
-    if (std::abs(e.dot(a)) < std::abs(best.dot(a)) - 1e-12) best = e;
-  return (best - best.dot(a) * a).normalized();
-}
-
 void validate(const ClProgram& program, const planning::Tool& tool,
               const PlaceProgramParams& params) {
   planning::validateTool(tool);
@@ -84,6 +75,9 @@ void validate(const ClProgram& program, const planning::Tool& tool,
   if (!std::isfinite(params.contactSearchMm) || !(params.contactSearchMm > 0))
     throw InvalidInput("placing a program: contact search distance " +
                        number(params.contactSearchMm) + " mm is not positive");
+  if (!std::isfinite(params.gougeWarnMm) || !(params.gougeWarnMm > 0))
+    throw InvalidInput("placing a program: gouge warning depth " + number(params.gougeWarnMm) +
+                       " mm is not positive");
   if (!std::isfinite(params.angleSnapDeg) || params.angleSnapDeg < 0)
     throw InvalidInput("placing a program: angle snap " + number(params.angleSnapDeg) +
                        " deg is negative");
@@ -92,27 +86,19 @@ void validate(const ClProgram& program, const planning::Tool& tool,
                        " is negative");
 }
 
-/// A program point in the part frame.
-struct PlacedPoint {
-  int source = 0;
-  bool passStart = false;
-  Vec3 position = Vec3::Zero();
-  std::optional<Vec3> axis;
-  std::optional<Vec3> normal;
-};
-
-/// Point @p i rescaled and moved into the part frame.
+/// Point @p i rescaled and moved into the part frame, with the tool axis in force there
+/// (@p axis: its own, else the last one given before it).
 PlacedPoint toPartFrame(const ClProgram& program, int i, const Eigen::Isometry3d& transform,
-                        double scale) {
+                        double scale, const std::optional<Vec3>& axis) {
   const ClPoint& p = program.points[static_cast<std::size_t>(i)];
   if (!p.positionMm.allFinite())
     throw InvalidInput("placing a program: " + where(program, i) + ": position is not finite");
   PlacedPoint q;
   q.source = i;
   q.position = transform * (scale * p.positionMm);
-  if (p.axis)
+  if (axis)
     q.axis = transform.linear() *
-             unitOrThrow(*p.axis, where(program, i) + ": tool axis is zero or not finite");
+             unitOrThrow(*axis, where(program, i) + ": tool axis is zero or not finite");
   if (p.normal)
     q.normal = transform.linear() *
                unitOrThrow(*p.normal, where(program, i) + ": normal is zero or not finite");
@@ -127,8 +113,10 @@ std::vector<PlacedPoint> keptPoints(const ClProgram& program, const PlaceProgram
   int dropped = 0, firstDroppedLine = 0;
   bool gap = true;
   const ClPoint* previous = nullptr;
+  std::optional<Vec3> axisInForce;  // a point without an axis keeps the last one, as in APT
   for (int i = 0; i < static_cast<int>(program.points.size()); ++i) {
     const ClPoint& p = program.points[static_cast<std::size_t>(i)];
+    if (p.axis) axisInForce = p.axis;
     const bool keep = p.move == planning::MoveKind::Cut ||
                       (p.move == planning::MoveKind::Link && params.includeLinks) ||
                       (p.move == planning::MoveKind::Rapid && params.includeRapids);
@@ -137,7 +125,8 @@ std::vector<PlacedPoint> keptPoints(const ClProgram& program, const PlaceProgram
       gap = true;
       continue;
     }
-    PlacedPoint q = toPartFrame(program, i, params.transform, scale);
+    PlacedPoint q = toPartFrame(program, i, params.transform, scale, axisInForce);
+    q.cut = p.move == planning::MoveKind::Cut;
     q.passStart = gap || (previous && previous->move == planning::MoveKind::Cut &&
                           p.move == planning::MoveKind::Cut && previous->path != p.path);
     out.push_back(q);
@@ -150,23 +139,6 @@ std::vector<PlacedPoint> keptPoints(const ClProgram& program, const PlaceProgram
                                               "starts a new pass after each"});
   if (out.empty()) throw InvalidInput("placing a program: no point is left to place");
   return out;
-}
-
-/// Unit tangential part of @p feed at normal @p n, or a stable fallback.
-Vec3 tangentialFeed(const Vec3& feed, const Vec3& n, const Vec3& hint) {
-  for (const Vec3& d : {feed, hint}) {
-    const Vec3 t = d - d.dot(n) * n;
-    if (t.norm() > 1e-9 * std::max(1.0, d.norm())) return t.normalized();
-  }
-  return perpendicularTo(n);
-}
-
-/// Feed direction at kept point @p k: towards the next point of its pass, else from the
-/// previous one.
-Vec3 feedAt(const std::vector<PlacedPoint>& pts, std::size_t k) {
-  if (k + 1 < pts.size() && !pts[k + 1].passStart) return pts[k + 1].position - pts[k].position;
-  if (k > 0 && !pts[k].passStart) return pts[k].position - pts[k - 1].position;
-  return Vec3::Zero();
 }
 
 struct Reference {
@@ -220,14 +192,15 @@ Reference contactReference(const planning::Tool& tool, const PartSurface& surfac
   return {placed.pose.translation(), p.axis && tool.kind != ToolKind::Sphere ? *p.axis : axis};
 }
 
-std::vector<Reference> references(const ClProgram& program, const planning::Tool& tool,
-                                  const PartSurface& surface, const std::vector<PlacedPoint>& pts,
+std::vector<Reference> references(const ClProgram& program, ClPointKind kind,
+                                  const planning::Tool& tool, const PartSurface& surface,
+                                  const std::vector<PlacedPoint>& pts,
                                   const PlaceProgramParams& params) {
   const Vec3 defaultAxis = (params.transform.linear() * params.defaultAxis).normalized();
   std::vector<Reference> out;
   out.reserve(pts.size());
   for (std::size_t k = 0; k < pts.size(); ++k) {
-    if (program.pointKind == ClPointKind::ToolReference) {
+    if (kind == ClPointKind::ToolReference) {
       out.push_back({pts[k].position, pts[k].axis.value_or(defaultAxis)});
       continue;
     }
@@ -268,15 +241,50 @@ std::vector<Eigen::Matrix3d> frames(ToolKind kind, const std::vector<Reference>&
   return out;
 }
 
-/// Off-part warning and feed of a placed program.
-void summarize(const ClProgram& program, int kept, int firstOff, double scale,
+/// First source points of the off-part and gouging poses, -1 if none.
+struct FirstPoints {
+  int off = -1;
+  int gouge = -1;
+};
+
+/// Counts a pose with contact @p c and unit spindle axis @p spindle into the figures of @p out.
+void tally(const PoseContact& c, const Vec3& spindle, bool cutter, int source,
+           const PlaceProgramParams& params, ImportedPath& out, FirstPoints& first) {
+  const double d = c.distanceMm;
+  out.maxAbsContactDistanceMm = std::max(out.maxAbsContactDistanceMm, std::abs(d));
+  if (std::abs(d) > params.contactSearchMm) {
+    if (out.pointsOffPart++ == 0) first.off = source;
+  } else {
+    out.maxOnPartContactDistanceMm =
+        std::max(out.maxOnPartContactDistanceMm.value_or(0.0), std::abs(d));
+  }
+  // Beside an open part's border "behind" the surface is not inside the material. A cutter's
+  // holder on the far side of the surface gouges however its tip touches.
+  if (c.beside) return;
+  out.maxGougeDepthMm = std::max(out.maxGougeDepthMm, -d);
+  if (-d > params.gougeWarnMm || (cutter && spindle.dot(c.normal) < 0.0))
+    if (out.gougingPoses++ == 0) first.gouge = source;
+}
+
+/// Off-part and gouge warnings and the feed of a placed program.
+void summarize(const ClProgram& program, int kept, FirstPoints first, double scale,
                const PlaceProgramParams& params, ImportedPath& out) {
   planning::ToolPath& path = out.path;
+  const auto lineOf = [&](int i) { return program.points[static_cast<std::size_t>(i)].sourceLine; };
+  if (out.gougingPoses > 0)
+    out.warnings.push_back(
+        {lineOf(first.gouge),
+         std::to_string(out.gougingPoses) + " of " + std::to_string(kept) +
+             " poses gouge the part (the tool reaches more than " + number(params.gougeWarnMm) +
+             " mm into it, deepest " + number(out.maxGougeDepthMm) +
+             " mm, or a cutter's axis points into it; first: " + where(program, first.gouge) +
+             "): " + detail::conventionSummary(out.convention) +
+             "; another vector or point meaning may fit"});
   if (out.pointsOffPart > 0)
-    out.warnings.push_back({program.points[static_cast<std::size_t>(firstOff)].sourceLine,
-                            std::to_string(out.pointsOffPart) + " of " + std::to_string(kept) +
+    out.warnings.push_back(
+        {lineOf(first.off), std::to_string(out.pointsOffPart) + " of " + std::to_string(kept) +
                                 " points lie farther than " + number(params.contactSearchMm) +
-                                " mm from the part (first: " + where(program, firstOff) + ")"});
+                                " mm from the part (first: " + where(program, first.off) + ")"});
   const auto feed = std::find_if(
       program.points.begin(), program.points.end(),
       [](const ClPoint& p) { return p.move == planning::MoveKind::Cut && p.feedMmPerMin > 0; });
@@ -288,6 +296,16 @@ void summarize(const ClProgram& program, int kept, int firstOff, double scale,
   }
 }
 
+/// A program with tool changes is placed with one tool: say so, naming the tools it has.
+ClMessage toolChangeWarning(const ClProgram& program, const planning::Tool& tool) {
+  std::string tools = "T" + std::to_string(program.toolNumber);
+  for (const ClToolChange& c : program.toolChanges) tools += ", T" + std::to_string(c.toolNumber);
+  return {program.toolChanges.front().sourceLine,
+          "the program changes tools " + std::to_string(program.toolChanges.size()) + " times (" +
+              tools + "); every point is placed and simulated with '" + tool.name +
+              "': split the file at its tool changes to check each tool with its own geometry"};
+}
+
 }  // namespace
 
 ImportedPath placeProgram(const ClProgram& program, const planning::Tool& tool,
@@ -297,9 +315,13 @@ ImportedPath placeProgram(const ClProgram& program, const planning::Tool& tool,
   const double scale = params.actualUnit
                            ? millimetresPer(*params.actualUnit) / millimetresPer(program.sourceUnit)
                            : 1.0;
-  const std::vector<PlacedPoint> pts = keptPoints(program, params, scale, out.warnings);
+  std::vector<PlacedPoint> pts = keptPoints(program, params, scale, out.warnings);
+  if (!program.toolChanges.empty()) out.warnings.push_back(toolChangeWarning(program, tool));
   const PartSurface surface(part);
-  const std::vector<Reference> refs = references(program, tool, surface, pts, params);
+  out.convention =
+      detail::resolveConvention(surface, pts, tool, program.pointKind, params, out.warnings);
+  const ClPointKind kind = detail::applyConvention(out.convention, tool, surface, pts);
+  const std::vector<Reference> refs = references(program, kind, tool, surface, pts, params);
   const std::vector<Eigen::Matrix3d> rot = frames(tool.kind, refs);
   const auto samples = coreSamples(tool);
 
@@ -308,7 +330,7 @@ ImportedPath placeProgram(const ClProgram& program, const planning::Tool& tool,
               : !program.partName.empty() ? program.partName
                                           : "imported path";
   path.tool = params.toolIndex;
-  int firstOff = -1;
+  FirstPoints first;
   for (std::size_t k = 0; k < pts.size(); ++k) {
     planning::PathPose pose;
     pose.pose.linear() = rot[k];
@@ -318,17 +340,13 @@ ImportedPath placeProgram(const ClProgram& program, const planning::Tool& tool,
     if (pts[k].passStart) path.passStarts.push_back(static_cast<int>(k));
     path.poses.push_back(pose);
     out.normals.push_back(c.normal);
-    const double bestGap = c.distanceMm;
-    out.contactDistancesMm.push_back(bestGap);
+    out.contactDistancesMm.push_back(c.distanceMm);
     out.sourcePoints.push_back(pts[k].source);
-    if (std::abs(bestGap) > params.contactSearchMm) {
-      if (out.pointsOffPart++ == 0) firstOff = pts[k].source;
-    } else {
-      out.maxContactDistanceMm = std::max(out.maxContactDistanceMm, std::abs(bestGap));
-    }
+    tally(c, rot[k].col(isCutter(tool.kind) ? 2 : 0), isCutter(tool.kind), pts[k].source, params,
+          out, first);
     if (k % 256 == 255) reportProgress(params.progress, 0.5 + 0.5 * double(k) / double(pts.size()));
   }
-  summarize(program, static_cast<int>(pts.size()), firstOff, scale, params, out);
+  summarize(program, static_cast<int>(pts.size()), first, scale, params, out);
   reportProgress(params.progress, 1.0);
   return out;
 }

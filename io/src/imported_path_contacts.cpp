@@ -104,7 +104,13 @@ PoseContact contactOf(const PartSurface& surface, const Eigen::Isometry3d& pose,
     }
   }
   const auto [foot, n] = surface.smoothFoot(core, best);
-  return {foot.point, n, foot.signedDistance - reach};
+  return {foot.point, n, foot.signedDistance - reach, besideBorder(core, foot.point, n)};
+}
+
+bool besideBorder(const Vec3& c, const Vec3& foot, const Vec3& n) {
+  const Vec3 offset = c - foot;
+  const double length = offset.norm();
+  return length > 1e-3 && std::abs(offset.dot(n)) < 0.9 * length;
 }
 
 }  // namespace ddfcam::io::detail

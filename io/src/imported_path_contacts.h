@@ -54,11 +54,17 @@ class PartSurface {
 /// a sample equals the sample's reach.
 std::vector<std::pair<ddf::Vec3, double>> coreSamples(const planning::Tool& tool);
 
+/// @brief True when @p c lies beside the part's border rather than above or below its surface:
+/// the offset from @p foot (its nearest surface point, unit normal @p n there) leaves the normal
+/// line by more than about 25 deg. Offsets below 1 um count as on the normal.
+bool besideBorder(const ddf::Vec3& c, const ddf::Vec3& foot, const ddf::Vec3& n);
+
 /// @brief Where a placed tool touches the part.
 struct PoseContact {
-  ddf::Vec3 point;    ///< contact point on the smooth surface, mm
-  ddf::Vec3 normal;   ///< unit surface normal there, tool side
-  double distanceMm;  ///< gap between tool and surface, mm (< 0: penetration)
+  ddf::Vec3 point;      ///< contact point on the smooth surface, mm
+  ddf::Vec3 normal;     ///< unit surface normal there, tool side
+  double distanceMm;    ///< gap between tool and surface, mm (< 0: penetration)
+  bool beside = false;  ///< the tool lies beside the part's border (besideBorder()), not over it
 };
 
 /// @brief The contact of the tool at @p pose: the core sample of @p samples nearest to the

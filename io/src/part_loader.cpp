@@ -35,11 +35,7 @@ ddf::DisplacementField convertMesh(const std::filesystem::path& path, const Load
   report.converted = true;
   report.meshVertices = static_cast<int>(mesh.vertices.size());
   report.meshTriangles = static_cast<int>(mesh.triangles.size());
-  report.droppedFaces = result.droppedFaces;
-  report.degenerateFaces = result.degenerateFaces;
-  report.weldedVertices = result.weldedVertices;
-  report.repairedVertices = static_cast<int>(result.repairedVertices.size());
-  report.infeasibleVertices = static_cast<int>(result.infeasibleVertices.size());
+  report.conversion = std::move(result.report);
   return std::move(result.ddf);
 }
 

@@ -141,11 +141,76 @@ bool looksLikeFanuc(const std::vector<std::string_view>& lines) {
   return !lines.empty() && lines.front().substr(0, 5) == "/PROG";
 }
 
+/// @p line without its "(...)" comments and anything after a ';' comment, trimmed.
+std::string_view withoutGCodeComments(std::string_view line, std::string& scratch) {
+  scratch.clear();
+  int depth = 0;
+  for (const char c : line) {
+    if (c == ';' && depth == 0) break;
+    if (c == '(') ++depth;
+    if (depth == 0) scratch += c;
+    if (c == ')' && depth > 0) --depth;
+  }
+  return trim(scratch);
+}
+
+/// An RS274 block: an optional block-delete '/', then address words (a letter followed by a
+/// number, a parameter '#' or an expression '['), at least one G or M word among them.
+bool isGCodeBlock(std::string_view block) {
+  if (!block.empty() && block.front() == '/') block.remove_prefix(1);
+  bool motionOrMisc = false;
+  std::size_t i = 0;
+  while (i < block.size()) {
+    const unsigned char c = static_cast<unsigned char>(block[i]);
+    if (std::isspace(c)) {
+      ++i;
+      continue;
+    }
+    if (!std::isalpha(c) || i + 1 >= block.size()) return false;
+    const char letter = static_cast<char>(std::toupper(c));
+    const char next = block[i + 1];
+    if (!std::isdigit(static_cast<unsigned char>(next)) &&
+        std::string_view("+-.#[").find(next) == std::string_view::npos)
+      return false;
+    if (letter == 'G' || letter == 'M') motionOrMisc = true;
+    // Skip the value: digits and signs, a #<name> parameter, a [...] expression.
+    for (++i; i < block.size() && !std::isalpha(static_cast<unsigned char>(block[i]));) {
+      const char closing = block[i] == '[' ? ']' : block.substr(i, 2) == "#<" ? '>' : '\0';
+      if (closing == '\0') {
+        ++i;
+        continue;
+      }
+      const std::size_t end = block.find(closing, i);
+      if (end == std::string_view::npos) return false;
+      i = end + 1;
+    }
+  }
+  return motionOrMisc;
+}
+
+/// G-code: after '%' lines, an O program number or name and comments, the first lines are
+/// RS274 blocks (two at least, none of another kind before them).
+bool looksLikeGCode(const std::vector<std::string_view>& lines) {
+  int blocks = 0;
+  std::string scratch;
+  for (const std::string_view raw : lines) {
+    const std::string_view line = withoutGCodeComments(raw, scratch);
+    if (line.empty() || line == "%") continue;
+    if (blocks == 0 && (line.front() == 'O' || line.front() == 'o') &&
+        line.find('/') == std::string_view::npos && line.find(',') == std::string_view::npos)
+      continue;
+    if (!isGCodeBlock(line)) return false;
+    if (++blocks >= 2) return true;
+  }
+  return false;
+}
+
 std::optional<PathFormat> sniffUnknown(std::string_view head,
                                        const std::vector<std::string_view>& lines) {
   if (looksLikeFanuc(lines)) return PathFormat::FanucLs;
   if (looksLikeRosYaml(lines)) return PathFormat::RosYaml;
   if (startsLikeApt(lines) && hasGoto(head)) return PathFormat::Apt;
+  if (looksLikeGCode(lines)) return PathFormat::GCode;
   if (looksLikeCsv(lines)) return PathFormat::Csv;
   return std::nullopt;
 }
@@ -214,6 +279,7 @@ std::optional<PathFormat> detectPathFormat(const std::filesystem::path& file,
     return PathFormat::Apt;
   if (ext == ".txt") {
     if (startsLikeApt(lines)) return PathFormat::Apt;
+    if (looksLikeGCode(lines)) return PathFormat::GCode;
     if (looksLikeCsv(lines)) return PathFormat::Csv;
     return std::nullopt;
   }

@@ -22,7 +22,9 @@ bool canOpenAsProject(const std::filesystem::path& path) {
   return isProjectFile(path) || lowerExtension(path) == ".ddf" || meshFormatOf(path).has_value();
 }
 
-planning::Project openProject(const std::filesystem::path& path, const LoadPartParams& params) {
+planning::Project openProject(const std::filesystem::path& path, const LoadPartParams& params,
+                              LoadPartReport* out) {
+  if (out) *out = LoadPartReport{};
   if (isProjectFile(path)) {
     reportProgress(params.progress, 0.0);
     planning::Project project = readProject(path);
@@ -38,6 +40,7 @@ planning::Project openProject(const std::filesystem::path& path, const LoadPartP
   // the part against what was delivered. A second read costs a small share of the conversion.
   if (report.converted) project.designMesh = readMesh(path);
   project.states.push_back({"stock", project.part->allHeights()});
+  if (out) *out = std::move(report);
   return project;
 }
 

@@ -119,7 +119,11 @@ class RowReader {
     for (std::size_t c = 0; c < fields_.size(); ++c) readField(c, point);
     point.positionMm = positionScale_ * ddf::Vec3(values_[0], values_[1], values_[2]);
     if (const auto problem = detail::positionProblem(point.positionMm)) fail(*problem);
+    // An axis left blank keeps the one in force, as APT's 3-value GOTO does after a 6-value
+    // one: a blank is no claim that the tool stands vertical.
     if (hasAxis_) point.axis = vector(3, "axis");
+    if (point.axis) lastAxis_ = point.axis;
+    if (hasAxis_ && !point.axis) point.axis = lastAxis_;
     if (hasNormal_) point.normal = vector(6, "normal");
     point.path = pathIndex(path_.value_or(0));
     int& count = pointCounts_[static_cast<std::size_t>(point.path)];
@@ -238,6 +242,7 @@ class RowReader {
   std::optional<long long> path_, pointIndex_;
   std::map<long long, int> paths_;
   std::optional<std::pair<long long, int>> lastPath_;
+  std::optional<ddf::Vec3> lastAxis_;  // the last axis given, carried over blank axis cells
   std::vector<int> pointCounts_;
 };
 
@@ -325,6 +330,7 @@ ClProgram decodeToolPathCsv(std::string_view text, const std::string& sourceName
     reader->read(line, lineNumber);
   }
   if (!reader) throw IoError(sourceName + ": no header and no data row: not a tool-path CSV");
+  if (program.points.empty()) throw IoError(sourceName + ": a header but no data row: no points");
   return program;
 }
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace ddfcam::planning {
 namespace detail {
@@ -143,6 +144,20 @@ ErrorStatistics errorStatistics(const ScalarField& deviation, const ddf::Displac
   stats.materialLeftPercent = 100.0 * left / stats.areaMm2;
   stats.overcutPercent = 100.0 * over / stats.areaMm2;
   return stats;
+}
+
+CrustClamping crustClamping(const ScalarField& deviation, const ddf::DisplacementField& produced,
+                            std::span<const int> faces) {
+  std::vector<detail::WeightedValue> clamped =
+      detail::weightedRegionValues(produced, deviation.values, faces, "crustClamping");
+  const std::vector<float>& heights = produced.allHeights();
+  std::erase_if(clamped, [&](const detail::WeightedValue& s) {
+    return !(s.value < 0.0 && heights[s.index] <= -1.0f);
+  });
+  CrustClamping out;
+  for (const detail::WeightedValue& s : clamped) out.areaMm2 += s.weight;
+  out.points = distinctPoints(produced, clamped);
+  return out;
 }
 
 AreaHistogram errorHistogram(const ScalarField& deviation, const ddf::DisplacementField& ddf,

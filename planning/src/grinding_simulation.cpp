@@ -118,6 +118,7 @@ void GrindingSimulation::cutPose(int k) {
         ddf::cutByMesh(workpiece_, hash_, hull, Eigen::Isometry3d::Identity(), params_.depthBuffer);
   }
   report_.pointsLowered += stats.pointsLowered;
+  report_.pointsClamped += stats.pointsClamped;
 }
 
 int GrindingSimulation::advance(int poses, const ProgressCallback& progress) {

@@ -80,6 +80,9 @@ void validateKinematics(const TableKinematics& k) {
                            std::isfinite(k.rotaryMaxDeg))) {
     throw InvalidInput("machine kinematics: C limits must satisfy rotaryMinDeg < rotaryMaxDeg");
   }
+  if (std::abs(k.tiltDirection) != 1.0 || std::abs(k.rotaryDirection) != 1.0) {
+    throw InvalidInput("machine kinematics: tiltDirection and rotaryDirection must be +1 or -1");
+  }
   if (!(k.singularToleranceDeg > 0.0 && k.singularToleranceDeg < 1.0)) {
     throw InvalidInput("machine kinematics: singularToleranceDeg must lie in (0, 1)");
   }
@@ -89,8 +92,8 @@ PartToolPose forwardKinematics(const TableKinematics& k, const MachinePose& pose
   if (!finite(pose.xyzMm) || !std::isfinite(pose.tiltDeg) || !std::isfinite(pose.rotaryDeg)) {
     throw InvalidInput("forward kinematics: machine pose is not finite");
   }
-  const Eigen::Matrix3d tilt = tiltRotation(k.pair, pose.tiltDeg);
-  const Eigen::Matrix3d rotary = rotaryRotation(pose.rotaryDeg);
+  const Eigen::Matrix3d tilt = tiltRotation(k.pair, k.tiltDirection * pose.tiltDeg);
+  const Eigen::Matrix3d rotary = rotaryRotation(k.rotaryDirection * pose.rotaryDeg);
   const ddf::Vec3& p = k.pivotMm;
   const ddf::Vec3 q = k.pivotMm + k.rotaryOffsetMm;
   // Invert m = T (Rz (x - Q) + Q - P) + P for the tip, and T Rz a = +Z for the axis.
@@ -103,11 +106,39 @@ PartToolPose forwardKinematics(const TableKinematics& k, const MachinePose& pose
 
 namespace {
 
-/// Machine X Y Z of the part point @p tip at rotary positions (@p tiltDeg, @p cDeg).
+/// Machine X Y Z of the part point @p tip at programmed rotary positions (@p tiltDeg, @p cDeg).
 ddf::Vec3 machineXyz(const TableKinematics& k, const ddf::Vec3& tip, double tiltDeg, double cDeg) {
   const ddf::Vec3 q = k.pivotMm + k.rotaryOffsetMm;
-  const ddf::Vec3 turned = rotaryRotation(cDeg) * (tip - q) + q;
-  return tiltRotation(k.pair, tiltDeg) * (turned - k.pivotMm) + k.pivotMm;
+  const ddf::Vec3 turned = rotaryRotation(k.rotaryDirection * cDeg) * (tip - q) + q;
+  return tiltRotation(k.pair, k.tiltDirection * tiltDeg) * (turned - k.pivotMm) + k.pivotMm;
+}
+
+/// 1 when a candidate with programmed tilt @p tiltDeg goes against the preferred solution.
+int againstPreference(const TableKinematics& k, double tiltDeg) {
+  switch (k.solution) {
+    case RotarySolution::PositiveTilt:
+      return tiltDeg < 0.0 ? 1 : 0;
+    case RotarySolution::NegativeTilt:
+      return tiltDeg > 0.0 ? 1 : 0;
+    case RotarySolution::Nearest:
+      break;
+  }
+  return 0;
+}
+
+/// What would reach an axis that needs the physical tilt @p tiltDeg (>= 0) and is out of reach.
+std::string reachAdvice(const TableKinematics& k, double tiltDeg) {
+  std::ostringstream out;
+  const char* name = k.pair == RotaryPair::AC ? "A" : "B";
+  if (tiltDeg > 179.0) {
+    out << "the tool points up at the part from below: turn the part over (fixture it the "
+           "other way up, or transform the program) so that the tool comes from above";
+  } else {
+    out << "give a machine whose " << name << " limits include +" << tiltDeg << " or -" << tiltDeg
+        << " deg (a machine file, --machine), or fixture the part so that the tool axis "
+           "tilts less";
+  }
+  return out.str();
 }
 
 std::string limitsText(const TableKinematics& k) {
@@ -138,24 +169,30 @@ InverseKinematicsResult inverseKinematics(const TableKinematics& k, const ddf::V
   const double sinTilt = std::hypot(a.x(), a.y());
   result.singular = a.z() > 0.0 && sinTilt < std::sin(k.singularToleranceDeg * kDegToRad);
   // Candidates (tilt, C): the two solutions; at the singular pose C is free and kept.
+  // Programmed values of the two physical solutions (t, c) and (-t, c + 180).
+  const double st = k.tiltDirection, sr = k.rotaryDirection;
   std::array<std::array<double, 2>, 2> candidates{
-      {{principal[0], principal[1]}, {-principal[0], principal[1] + 180.0}}};
+      {{st * principal[0], sr * principal[1]}, {-st * principal[0], sr * (principal[1] + 180.0)}}};
   if (result.singular) candidates = {{{0.0, previous.rotaryDeg}, {0.0, previous.rotaryDeg}}};
   double bestCost = 0.0;
+  int bestRank = 0;
   for (const auto& [tilt, c] : candidates) {
     if (tilt < k.tiltMinDeg || tilt > k.tiltMaxDeg) continue;
     const std::optional<double> unwrapped = unwrapRotary(c, previous.rotaryDeg, k);
     if (!unwrapped) continue;
     const double cost =
         std::abs(tilt - previous.tiltDeg) + std::abs(*unwrapped - previous.rotaryDeg);
-    if (result.pose && cost >= bestCost) continue;
+    const int rank = againstPreference(k, tilt);
+    if (result.pose && (rank > bestRank || (rank == bestRank && cost >= bestCost))) continue;
     bestCost = cost;
+    bestRank = rank;
     result.pose = MachinePose{machineXyz(k, tipMm, tilt, *unwrapped), tilt, *unwrapped};
   }
   if (!result.pose) {
     std::ostringstream out;
     out << "tool axis " << describe(a) << " needs " << (k.pair == RotaryPair::AC ? "A" : "B")
-        << " = +-" << principal[0] << " deg, outside the machine limits (" << limitsText(k) << ")";
+        << " = +-" << principal[0] << " deg, outside the machine limits (" << limitsText(k) << "); "
+        << reachAdvice(k, principal[0]);
     result.reason = out.str();
   }
   return result;

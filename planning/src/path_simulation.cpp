@@ -49,8 +49,9 @@ PathSimulationReport simulatePath(ddf::DisplacementField& ddf, const Tool& tool,
   const ddf::CrustHash hash(ddf);
   ProgressThrottle throttle(params.progress, path.poses.size());
   for (const PathPose& pose : path.poses) {
-    report.pointsLowered +=
-        ddf::cutByMesh(ddf, hash, mesh, pose.pose, params.depthBuffer).pointsLowered;
+    const ddf::CutStats stats = ddf::cutByMesh(ddf, hash, mesh, pose.pose, params.depthBuffer);
+    report.pointsLowered += stats.pointsLowered;
+    report.pointsClamped += stats.pointsClamped;
     ++report.poses;
     throttle.posesDone(static_cast<std::size_t>(report.poses));
   }

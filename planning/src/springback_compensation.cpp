@@ -69,7 +69,11 @@ std::vector<float> formedHeightsFromMesh(const ddf::DisplacementField& target,
   const std::vector<float> factors = supportNormalFactors(target);
   checkSize(target, result.deviation.values.size(), "formedHeightsFromMesh: comparison");
   std::vector<float> heights(factors.size(), kNaN);
+  // Deviations on faces the sequence left unresolved are not trustworthy: NaN keeps the mould.
+  std::vector<char> unresolved(static_cast<std::size_t>(target.faceCount()), 0);
+  for (int f : result.sequence.unresolvedFaces) unresolved.at(static_cast<std::size_t>(f)) = 1;
   for (std::size_t l = 0; l < heights.size(); ++l) {
+    if (unresolved[l / target.pointsPerFace()]) continue;
     const double deviation = result.deviation.values[l];
     // A stubble grazing the support (v . n ~ 0) cannot carry a normal deviation into a height.
     if (std::isfinite(deviation) && factors[l] > 1e-12f)

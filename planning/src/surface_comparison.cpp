@@ -71,6 +71,21 @@ ddf::DisplacementField flatMould(const ddf::DisplacementField& mouldDdf) {
   return flat;
 }
 
+// Statistics over the resolved faces; throws when all deviations found lie on unresolved ones.
+ErrorStatistics resolvedStatistics(const SurfaceComparison& comparison,
+                                   const ddf::DisplacementField& flat, const ToleranceBand& band) {
+  const std::vector<int> faces = resolvedFaces(comparison);
+  const ComparisonCoverage coverage = comparisonCoverage(comparison);
+  if (faces.empty() || !(coverage.compared.coveredAreaMm2 > 0.0))
+    throw InvalidInput(
+        "compareSurfaces: the comparison failed: every deviation found lies on one "
+        "of the " +
+        std::to_string(coverage.unresolvedFaces) +
+        " unresolved faces (the deformation sequence did not resolve them), so "
+        "none can be trusted; allow more stages or check the alignment");
+  return errorStatistics(comparison.deviation, flat, band, faces);
+}
+
 // Deviation vectors q - g and signed deviations (q - g) . n per raster point copy.
 void fillDeviations(const ddf::DisplacementField& flat, const std::vector<Vec3>& deformedPoints,
                     bool flipNormal, SurfaceComparison& out) {
@@ -134,7 +149,7 @@ SurfaceComparison compareSurfaces(const ddf::DisplacementField& mouldDdf,
                    [](float x) { return std::isfinite(x); }))
     throwNoOverlap(mouldDdf, deformed);
   out.band = params.band;
-  out.statistics = errorStatistics(out.deviation, flat, params.band);
+  out.statistics = resolvedStatistics(out, flat, params.band);
   reportProgress(params.progress, 1.0);
   return out;
 }
@@ -148,7 +163,52 @@ void updateComparisonBand(SurfaceComparison& comparison, const ToleranceBand& ba
     for (float& value : comparison.deviation.values) value = -value;
   comparison.band = band;
   comparison.statistics =
-      errorStatistics(comparison.deviation, flatMould(comparison.sequence.stages[0].ddf), band);
+      resolvedStatistics(comparison, flatMould(comparison.sequence.stages[0].ddf), band);
+}
+
+std::string stallAdvice(const SurfaceComparison& comparison) {
+  const ddf::DeformationSequence& sequence = comparison.sequence;
+  if (!sequence.stalled) return {};
+  return "the deformation sequence stalled after " + std::to_string(sequence.stages.size()) +
+         " stages with " + std::to_string(sequence.unresolvedFaces.size()) + " of " +
+         std::to_string(sequence.stages.at(0).ddf.faceCount()) +
+         " faces still leaving the unique-projection crust (each split carried only a sliver of "
+         "the deformation; those faces are left out of the statistics). The formed surface "
+         "lies beyond the crust the mould's support allows there: check the alignment, swap "
+         "mould and formed (the smoother, coarser surface should be the mould), or use a "
+         "coarser mould support (decimate a dense mesh such as an exported raster mesh)";
+}
+
+std::vector<int> resolvedFaces(const SurfaceComparison& comparison) {
+  const int faces = comparison.sequence.stages.at(0).ddf.faceCount();
+  const std::vector<int>& unresolved = comparison.sequence.unresolvedFaces;
+  std::vector<int> out;
+  out.reserve(static_cast<std::size_t>(faces));
+  for (int f = 0; f < faces; ++f)
+    if (!std::binary_search(unresolved.begin(), unresolved.end(), f)) out.push_back(f);
+  return out;
+}
+
+ComparisonCoverage comparisonCoverage(const SurfaceComparison& comparison) {
+  const ddf::DisplacementField flat = flatMould(comparison.sequence.stages.at(0).ddf);
+  const std::vector<double> areas = rasterPointAreas(flat);
+  const std::vector<int>& unresolved = comparison.sequence.unresolvedFaces;
+  std::vector<char> isUnresolved(static_cast<std::size_t>(flat.faceCount()), 0);
+  for (int f : unresolved)
+    if (f >= 0 && f < flat.faceCount()) isUnresolved[static_cast<std::size_t>(f)] = 1;
+  ComparisonCoverage out;
+  out.unresolvedFaces = unresolved.size();
+  const std::vector<float>& deviation = comparison.deviation.values;
+  for (std::size_t l = 0; l < areas.size() && l < deviation.size(); ++l) {
+    out.compared.totalAreaMm2 += areas[l];
+    if (!std::isfinite(deviation[l]))
+      out.missingAreaMm2 += areas[l];
+    else if (isUnresolved[l / flat.pointsPerFace()])
+      out.unresolvedAreaMm2 += areas[l];
+    else
+      out.compared.coveredAreaMm2 += areas[l];
+  }
+  return out;
 }
 
 ScalarField crossingRegionField(const SurfaceComparison& comparison) {

@@ -317,11 +317,45 @@ TEST(DeformationSequence, BadInputIsRejected) {
   params.reachMm = -1.0;
   EXPECT_THROW(buildDeformationSequence(mould, target, params), InvalidInput);
   params = {};
+  params.stallStages = -1;
+  EXPECT_THROW(buildDeformationSequence(mould, target, params), InvalidInput);
+  params = {};
   params.progress = [](double) { return false; };
   EXPECT_THROW(buildDeformationSequence(mould, target, params), Cancelled);
   const auto seq = buildDeformationSequence(mould, target);
   std::vector<float> wrong(seq.deformedPoints.size() + 1, 0.5f);
   EXPECT_THROW(morphPositions(seq, wrong), InvalidInput);
+}
+
+// A dense, rough mould: 0.5 mm cells whose vertices jitter by up to 0.05 mm, so neighbouring
+// pseudo-normals cross a few millimetres off the support. A plane 10 mm away lies far beyond
+// that crust, each split can carry only a sliver of the deformation and the crossing faces do
+// not shrink: the sequence stops after stallStages such splits instead of running to maxStages.
+TEST(DeformationSequence, SplitsWithoutHeadwayStopEarly) {
+  const TriangleMesh rough =
+      test::heightFieldMesh(0.0, 20.0, 0.0, 20.0, 40, 40, [](double x, double y) {
+        const double s = std::sin(12.9898 * x + 78.233 * y) * 43758.5453;
+        return 0.1 * (s - std::floor(s) - 0.5);
+      });
+  const DisplacementField mould = mouldOn(rough, 2);
+  const TriangleMesh plane =
+      test::heightFieldMesh(-5.0, 25.0, -5.0, 25.0, 6, 6, [](double, double) { return 10.0; });
+  const auto seq = buildDeformationSequence(mould, plane);
+  std::printf("[ stall    ] %zu stages, %zu crossing at stage 0, %zu unresolved of %d faces\n",
+              seq.stages.size(), seq.crossingFaces.size(), seq.unresolvedFaces.size(),
+              mould.faceCount());
+  EXPECT_TRUE(seq.stalled);
+  EXPECT_EQ(seq.stages.size(), 3u);  // stage 0 and two splits without headway
+  EXPECT_FALSE(seq.unresolvedFaces.empty());
+  for (std::size_t s = 0; s + 1 < seq.stages.size(); ++s) EXPECT_LT(seq.stages[s].fraction, 0.25);
+  // Without the stop it keeps splitting to the stage limit and still leaves faces unresolved.
+  DeformationSequenceParams params;
+  params.stallStages = 0;
+  params.maxStages = 6;
+  const auto all = buildDeformationSequence(mould, plane, params);
+  EXPECT_FALSE(all.stalled);
+  EXPECT_EQ(all.stages.size(), 6u);
+  EXPECT_FALSE(all.unresolvedFaces.empty());
 }
 
 }  // namespace

@@ -83,9 +83,9 @@ class LogCapture {
 TEST(MeshConversion, UnweldedOctahedronBecomesAValidClosedDdf) {
   const auto input = unwelded(toTriangleMesh(test::octahedronMesh(2.0)));
   const auto result = convertMeshToDdf(input);
-  EXPECT_EQ(result.weldedVertices, 24 - 6);
-  EXPECT_EQ(result.droppedFaces, 0);
-  EXPECT_EQ(result.degenerateFaces, 0);
+  EXPECT_EQ(result.report.weldedVertices, 24 - 6);
+  EXPECT_EQ(result.report.droppedFaces, 0);
+  EXPECT_EQ(result.report.degenerateFaces, 0);
   EXPECT_EQ(result.ddf.vertexCount(), 6);
   EXPECT_EQ(result.ddf.faceCount(), 8);
   EXPECT_EQ(result.ddf.resolution(), 10);
@@ -106,8 +106,8 @@ TEST(MeshConversion, DropsNonManifoldAndDegenerateTrianglesWithAWarning) {
   input.triangles.push_back({1, 1, 2});
   LogCapture capture;
   const auto result = convertMeshToDdf(input);
-  EXPECT_EQ(result.droppedFaces, 1);
-  EXPECT_EQ(result.degenerateFaces, 1);
+  EXPECT_EQ(result.report.droppedFaces, 1);
+  EXPECT_EQ(result.report.degenerateFaces, 1);
   EXPECT_EQ(result.ddf.faceCount(), 18);
   EXPECT_EQ(result.ddf.vertexCount(), 16);  // the fin's apex is not kept
   ASSERT_EQ(capture.warnings().size(), 1u);
@@ -138,9 +138,9 @@ TEST(MeshConversion, BunnyConvertsToAValidDdf) {
   ConversionParams params;
   params.resolution = 4;
   const auto result = convertMeshToDdf(input, params);
-  EXPECT_EQ(result.droppedFaces, 0);
+  EXPECT_EQ(result.report.droppedFaces, 0);
   EXPECT_EQ(result.ddf.faceCount(),
-            static_cast<int>(input.triangles.size()) - result.degenerateFaces);
+            static_cast<int>(input.triangles.size()) - result.report.degenerateFaces);
   EXPECT_TRUE(result.infeasibleVertices.empty());
   EXPECT_GE(result.lengths.minH0, 1.0);
   EXPECT_EQ(result.lengths.remainingConflicts, 0);

@@ -19,11 +19,12 @@
 #include <ddfcam/planning/demo_project.h>
 #include <ddfcam/planning/path_simulation.h>
 
+#include <qcustomplot.h>
 #include <QDockWidget>
+#include <QLabel>
 #include <QTableWidget>
 #include <QUndoStack>
 #include <QtTest/QtTest>
-#include <qcustomplot.h>
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
@@ -34,6 +35,7 @@
 #include <vtkPolyData.h>
 #include <vtkScalarsToColors.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -94,6 +96,7 @@ class ErrorMapPanelTest : public ddfcam::test::WorkbenchTest {
   void deviationAlongAPassFollowsTheGroove();
   void undoRemovesTheErrorMap();
   void scallopTableMatchesTheBallFormula();
+  void coverageAndClampingShowBesideTheStatistics();
 
  private:
   ErrorMapPanel* panel() { return f_.window->findChild<ErrorMapPanel*>(); }
@@ -136,8 +139,8 @@ void ErrorMapPanelTest::stockIsLeftAndGroovesAreOvercut() {
   QVERIFY2(stats->minMm < -0.9 * kInfeedMm, qPrintable(QString::number(stats->minMm)));
   QVERIFY(stats->overcutPercent > 1.0);
   QVERIFY(stats->materialLeftPercent > 1.0);
-  QVERIFY(std::abs(stats->inTolerancePercent + stats->overcutPercent +
-                   stats->materialLeftPercent - 100.0) < 1e-6);
+  QVERIFY(std::abs(stats->inTolerancePercent + stats->overcutPercent + stats->materialLeftPercent -
+                   100.0) < 1e-6);
   const auto& display = f_.window->partView().fieldDisplay();
   QCOMPARE(display.field, std::string(ErrorMapPanel::kDeviationField));
   QVERIFY(display.band.has_value());
@@ -150,14 +153,15 @@ void ErrorMapPanelTest::drawnColoursMatchTheStatistics() {
   const QImage frame = view.renderImage();
   ddfcam::test::dumpFrame(frame, "error_map_band");
   ddfcam::test::dumpFrame(f_.window->grab().toImage(), "error_map_window");
-  const ClassAreas drawn = drawnClassAreas(
-      f_.window->partView().scene().actor(ddfcam::gui::Layer::Surface));
+  const ClassAreas drawn =
+      drawnClassAreas(f_.window->partView().scene().actor(ddfcam::gui::Layer::Surface));
   const auto& stats = *panel()->statistics();
-  qInfo("drawn: in tolerance %.2f %%, overcut %.2f %%, left %.2f %%; statistics: %.2f %%, "
-        "%.2f %%, %.2f %%",
-        drawn.percent(ToleranceClass::InTolerance), drawn.percent(ToleranceClass::Overcut),
-        drawn.percent(ToleranceClass::MaterialLeft), stats.inTolerancePercent,
-        stats.overcutPercent, stats.materialLeftPercent);
+  qInfo(
+      "drawn: in tolerance %.2f %%, overcut %.2f %%, left %.2f %%; statistics: %.2f %%, "
+      "%.2f %%, %.2f %%",
+      drawn.percent(ToleranceClass::InTolerance), drawn.percent(ToleranceClass::Overcut),
+      drawn.percent(ToleranceClass::MaterialLeft), stats.inTolerancePercent, stats.overcutPercent,
+      stats.materialLeftPercent);
   QVERIFY(std::abs(drawn.percent(ToleranceClass::Overcut) - stats.overcutPercent) < 2.0);
   QVERIFY(std::abs(drawn.percent(ToleranceClass::InTolerance) - stats.inTolerancePercent) < 2.0);
   QVERIFY(std::abs(drawn.percent(ToleranceClass::MaterialLeft) - stats.materialLeftPercent) < 2.0);
@@ -169,8 +173,8 @@ void ErrorMapPanelTest::bandEditsRecolourAndUpdateStatistics() {
   const auto extremes = *panel()->statistics();
   panel()->setToleranceBand({extremes.minMm - 0.01, extremes.maxMm + 0.01});
   QVERIFY(std::abs(panel()->statistics()->inTolerancePercent - 100.0) < 1e-9);
-  const ClassAreas wide = drawnClassAreas(
-      f_.window->partView().scene().actor(ddfcam::gui::Layer::Surface));
+  const ClassAreas wide =
+      drawnClassAreas(f_.window->partView().scene().actor(ddfcam::gui::Layer::Surface));
   QVERIFY(wide.percent(ToleranceClass::InTolerance) > 99.5);
   panel()->setToleranceBand({-0.005, 0.01});
   const double narrow = panel()->statistics()->overcutPercent;
@@ -222,6 +226,33 @@ void ErrorMapPanelTest::scallopTableMatchesTheBallFormula() {
   auto* table = f_.window->findChild<QTableWidget*>("scallopTable");
   QVERIFY(table != nullptr);
   QCOMPARE(table->rowCount(), static_cast<int>(rows.size()));
+}
+
+// The statistics come with their coverage; heights a cut left at the crust bottom are counted
+// and flagged, since the true overcut is deeper there.
+void ErrorMapPanelTest::coverageAndClampingShowBesideTheStatistics() {
+  QVERIFY(panel()->coverage().has_value());
+  QVERIFY2(panel()->coverage()->percent() > 95.0,
+           qPrintable(QString::number(panel()->coverage()->percent())));
+  QCOMPARE(panel()->clamping()->points, std::size_t{0});
+  auto* label = f_.window->findChild<QLabel*>("errorStatisticsLabel");
+  QVERIFY(label != nullptr);
+  QVERIFY2(label->text().contains("coverage"), qPrintable(label->text()));
+  QVERIFY(!label->text().contains("clamped"));
+  // Face 0 cut down to the crust bottom.
+  ddfcam::planning::Project p = ddfcam::planning::demoProject();
+  auto heights = p.part->heights(0);
+  std::fill(heights.begin(), heights.end(), -1.0f);
+  load(std::move(p));
+  QVERIFY(panel()->setDesiredSurface(-1));
+  QVERIFY(panel()->computeErrorMap());
+  waitOk();
+  QVERIFY(panel()->clamping().has_value());
+  // Face 0's raster points (a shared edge point's sign may follow a neighbour's normal).
+  const std::size_t perFace = project().part->pointsPerFace();
+  QVERIFY2(panel()->clamping()->points > perFace / 2 && panel()->clamping()->points <= perFace,
+           qPrintable(QString::number(panel()->clamping()->points)));
+  QVERIFY2(label->text().contains("min is only a bound"), qPrintable(label->text()));
 }
 
 QTEST_MAIN(ErrorMapPanelTest)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The workbench window under Xvfb, checked the way a person would look at it: the start-up
 // part, the view, opening files through the menu (a job), bad files, screenshots, drops.
+#include "../support/conversion_meshes.h"
 #include "frame_checks.h"
 #include "workbench_fixture.h"
 
@@ -11,8 +12,10 @@
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/part_scene.h>
 #include <ddfcam/gui/part_view.h>
+#include <ddfcam/gui/project_actions.h>
 #include <ddfcam/gui/vtk_error_monitor.h>
 #include <ddfcam/gui/vtk_view.h>
+#include <ddfcam/io/mesh_io.h>
 #include <ddfcam/planning/project.h>
 
 #include <QAction>
@@ -76,6 +79,7 @@ class MainWindowTest : public QObject {
   void overlaysChangeTheImage_data();
   void overlaysChangeTheImage();
   void openMeshThroughMenu();
+  void openInvalidMeshIsFlagged();
   void corruptFileKeepsDocument_data();
   void corruptFileKeepsDocument();
   void saveScreenshotAtChosenSize();
@@ -194,6 +198,36 @@ void MainWindowTest::openMeshThroughMenu() {
   QVERIFY2(stats.centreForeground > 0.4, qPrintable(QString::number(stats.centreForeground)));
   QVERIFY(stats.cornersBackground);
   QVERIFY(changedFraction(demoImage, image) > 0.05);
+}
+
+void MainWindowTest::openInvalidMeshIsFlagged() {
+  // A fan whose face normals surround the origin: no vector at its centre faces all faces.
+  const QString path = f_.dir.filePath("fan.off");
+  ddfcam::io::writeMesh(ddfcam::test::foldedFanMesh(), path.toStdString());
+  QSignalSpy reported(&f_.window->projectActions(),
+                      &ddfcam::gui::ProjectActions::conversionReported);
+  f_.script.openPath = path;
+  action("actionOpen")->trigger();
+  QVERIFY(f_.window->waitForJobs());
+  QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
+  QCOMPARE(QString::fromStdString(project().partName), QString("fan.off"));
+  QCOMPARE(reported.count(), 1);
+  QCOMPARE(reported.front().at(1).toBool(), false);
+  // The same words as `ddfcam-cli convert`, in the status and, with the details, the console.
+  QVERIFY2(f_.window->statusText().contains("fan.off: INVALID DDF: violates constraint 1"),
+           qPrintable(f_.window->statusText()));
+  QTRY_VERIFY_WITH_TIMEOUT(
+      f_.window->console().text().contains("constraint 1 (front-facing vectors) fails at 1 vertex"),
+      2000);
+  // A valid mesh opened next clears the flag.
+  const QString hill = f_.dir.filePath("hill.off");
+  QVERIFY(writeFile(hill, hillOff(16, 12)));
+  f_.script.openPath = hill;
+  action("actionOpen")->trigger();
+  QVERIFY(f_.window->waitForJobs());
+  QCOMPARE(reported.count(), 2);
+  QCOMPARE(reported.back().at(1).toBool(), true);
+  QVERIFY2(!f_.window->statusText().contains("INVALID"), qPrintable(f_.window->statusText()));
 }
 
 void MainWindowTest::corruptFileKeepsDocument_data() {

@@ -17,6 +17,7 @@
 #include <QComboBox>
 #include <QFile>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QRegularExpression>
 #include <QtTest/QtTest>
@@ -327,6 +328,83 @@ class PathExportTest : public QObject {
     ddfcam::test::dumpFrame(dialog.grab().toImage(), "path_export_dialog_5axis");
   }
 
+  void gcodeForAMachineFileKeepsTipsAndAxes() {
+    PathExportOptions o = options(PathExportFormat::GCode, "haas.nc", {2});
+    o.machineFile = QString(DDFCAM_SOURCE_DIR) + "/resources/machines/haas-umc750.json";
+    QVERIFY(ddfcam::gui::pathExportProblem(project(), o).isEmpty());
+    QVERIFY(ddfcam::gui::exportMachineName(o).startsWith("Haas UMC-750"));
+    const QString text = readText(ddfcam::gui::exportPaths(project(), o).front());
+    QVERIFY(text.contains("(machine: Haas UMC-750"));
+    QVERIFY(text.contains(QRegularExpression("\\nG234 H[0-9]+\\n")));
+    // TCP: X Y Z are the tips; B and C give the axis by the Haas convention
+    // (sin B cos C, sin B sin C, cos B), read here from the text.
+    const QRegularExpression word(R"(([XYZBC])\s*(-?[0-9.]+))");
+    std::vector<std::pair<Vec3, Vec3>> moves;  // tip, axis
+    double b = 0.0, c = 0.0;
+    Vec3 at = Vec3::Zero();
+    for (const QString& line : text.split('\n')) {
+      for (auto m = word.globalMatch(line); m.hasNext();) {
+        const auto match = m.next();
+        const double v = match.captured(2).toDouble();
+        if (match.captured(1) == "B")
+          b = v;
+        else if (match.captured(1) == "C")
+          c = v;
+        else
+          at[QString("XYZ").indexOf(match.captured(1))] = v;
+      }
+      if (!line.startsWith("G1 ")) continue;
+      const double br = b * std::numbers::pi / 180.0, cr = c * std::numbers::pi / 180.0;
+      moves.push_back(
+          {at, Vec3(std::sin(br) * std::cos(cr), std::sin(br) * std::sin(cr), std::cos(br))});
+    }
+    std::size_t found = 0;
+    for (const auto& pose : project().paths[2].poses) {
+      const Vec3 tip = pose.pose.translation();
+      const Vec3 axis = pose.pose.linear() * Vec3::UnitZ();
+      for (const auto& [t, a] : moves) {
+        if ((t - tip).cwiseAbs().maxCoeff() > 0.5e-4 + 1e-9) continue;
+        QVERIFY((a - axis).norm() < 1e-5);
+        ++found;
+        break;
+      }
+    }
+    QCOMPARE(found, project().paths[2].poses.size());
+  }
+
+  void dialogTakesAMachineFile() {
+    PathExportOptions o = options(PathExportFormat::GCode, "machine.ngc", {1, 2});
+    ddfcam::gui::PathExportDialog dialog(project(), o, window_.get());
+    dialog.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+    auto* machine = dialog.findChild<QLineEdit*>("exportMachineFile");
+    auto* dialect = dialog.findChild<QComboBox*>("exportDialect");
+    auto* name = dialog.findChild<QLabel*>("exportMachineName");
+    QVERIFY(machine && dialect && name);
+    QVERIFY(machine->isEnabled());
+    QVERIFY(dialect->isEnabled());
+    machine->setText(QString(DDFCAM_SOURCE_DIR) + "/resources/machines/haas-umc750.json");
+    QVERIFY(!dialect->isEnabled());  // the machine replaces the dialect
+    QVERIFY(name->isVisible());
+    QVERIFY2(name->text().contains("B/C") && name->text().contains("TCP"),
+             qPrintable(name->text()));
+    QVERIFY(dialog.problem().isEmpty());
+    QCOMPARE(dialog.options().machineFile, machine->text());
+    ddfcam::test::dumpFrame(dialog.grab().toImage(), "path_export_dialog_machine");
+    QFile bad(dir_.filePath("bad_machine.json"));
+    QVERIFY(bad.open(QIODevice::WriteOnly));
+    bad.write(R"({"name": "x", "rotary_axes": "XY"})");
+    bad.close();
+    machine->setText(bad.fileName());
+    QVERIFY2(dialog.problem().contains("machine file") && dialog.problem().contains("AC or BC"),
+             qPrintable(dialog.problem()));
+    // CSV has no machine.
+    auto* format = dialog.findChild<QComboBox*>("exportFormat");
+    format->setCurrentIndex(format->findData(int(PathExportFormat::Csv)));
+    QVERIFY(!machine->isEnabled());
+    QVERIFY(dialog.problem().isEmpty());
+  }
+
   void remembersTheLastChoices() {
     PathExportOptions o = options(PathExportFormat::Apt, "remembered.apt", {1});
     o.dialect = PathExportDialect::AptNx;
@@ -343,6 +421,16 @@ class PathExportTest : public QObject {
     QCOMPARE(offered_->dialect, PathExportDialect::AptNx);
     QCOMPARE(offered_->coordinateDecimals, 6);
     QCOMPARE(offered_->vectorDecimals, 9);
+    QVERIFY(offered_->machineFile.isEmpty());
+    // A machine file is remembered too.
+    o = options(PathExportFormat::GCode, "remembered.ngc", {2});
+    o.machineFile = QString(DDFCAM_SOURCE_DIR) + "/resources/machines/table-bc.json";
+    choice_ = o;
+    window_->findChild<QAction*>("actionExportPaths")->trigger();
+    QVERIFY2(script_.errors.isEmpty(), qPrintable(script_.errors.join('\n')));
+    choice_.reset();
+    window_->findChild<QAction*>("actionExportPaths")->trigger();
+    QCOMPARE(offered_->machineFile, o.machineFile);
     QVERIFY(offered_->filePath.startsWith(dir_.path()));
   }
 

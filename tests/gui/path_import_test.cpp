@@ -6,6 +6,7 @@
 #include "frame_checks.h"
 #include "workbench_fixture.h"
 
+#include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/gui/app_setup.h>
 #include <ddfcam/gui/console_dock.h>
 #include <ddfcam/gui/document.h>
@@ -17,6 +18,7 @@
 #include <ddfcam/planning/demo_project.h>
 
 #include <QAction>
+#include <QComboBox>
 #include <QDropEvent>
 #include <QFile>
 #include <QListWidget>
@@ -77,6 +79,29 @@ QByteArray csvText() {
                   .arg(kCsvPaths[p][i].y())
                   .arg(kCsvPaths[p][i].z())
                   .toUtf8();
+  return text;
+}
+
+// A robot pass over the demo part's surface as x,y,z,i,j,k rows (no header, as robot tools
+// write them): points on the surface, vectors into the part (approach directions).
+QByteArray robotCsv(std::vector<Vec3>& points, std::vector<Vec3>& normals) {
+  const ddfcam::ddf::GeneratedSurface demo = ddfcam::ddf::demoPart();
+  QByteArray text;
+  for (int i = 0; i <= 10; ++i) {
+    const Vec3 below(10.0 + i, 12.0, 0.0);
+    const Vec3 p(below.x(), below.y(), -demo.surface->value(below));  // graph: value = z - f
+    const Vec3 n = demo.surface->normal(p);
+    points.push_back(p);
+    normals.push_back(n);
+    text += QString("%1 %2 %3 %4 %5 %6\n")
+                .arg(p.x(), 0, 'f', 9)
+                .arg(p.y(), 0, 'f', 9)
+                .arg(p.z(), 0, 'f', 9)
+                .arg(-n.x(), 0, 'f', 12)
+                .arg(-n.y(), 0, 'f', 12)
+                .arg(-n.z(), 0, 'f', 12)
+                .toUtf8();
+  }
   return text;
 }
 
@@ -278,6 +303,38 @@ class PathImportTest : public QObject {
     adjust_ = {};
   }
 
+  void robotVectorsAreReadAsTheDialogSays() {
+    const QString file = dir_.filePath("robot.csv");
+    std::vector<Vec3> points, normals;
+    QVERIFY(writeText(file, robotCsv(points, normals)));
+    const std::size_t paths = project().paths.size();
+    // Default (detect from the part): approach directions, the ball's axis out of the part.
+    for (const auto vectors : {io::PathVectorMeaning::Auto, io::PathVectorMeaning::ToolAxis}) {
+      adjust_ = [&](PathImportOptions& o) {
+        QCOMPARE(o.vectors, io::PathVectorMeaning::Auto);
+        QCOMPARE(o.points, io::PathPointMeaning::Auto);
+        o.toolIndex = 1;  // ball R2
+        o.vectors = vectors;
+      };
+      importByMenu(file);
+      QVERIFY2(script_.errors.isEmpty(), qPrintable(script_.errors.join('\n')));
+      const planning::ToolPath& path = project().paths.back();
+      QCOMPARE(path.poses.size(), points.size());
+      const double sign = vectors == io::PathVectorMeaning::Auto ? 1.0 : -1.0;
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        QVERIFY((path.poses[i].pose.translation() - points[i]).norm() < 1e-6);
+        QVERIFY(sign * (path.poses[i].pose.linear() * Vec3::UnitZ()).dot(normals[i]) > 0.999);
+      }
+    }
+    QVERIFY2(console().contains("approach directions (detected"), qPrintable(console()));
+    QVERIFY2(console().contains("11 of 11 poses gouge the part"), qPrintable(console()));
+    QCOMPARE(project().paths.size(), paths + 2);
+    window_->document().undoStack()->undo();
+    window_->document().undoStack()->undo();
+    QCOMPARE(project().paths.size(), paths);
+    adjust_ = {};
+  }
+
   void dialogShowsTheFile() {
     const QString file = dir_.filePath("dialog.apt");
     QVERIFY(writeText(file, kApt));
@@ -291,6 +348,15 @@ class PathImportTest : public QObject {
     QCOMPARE(shown.unit, io::LengthUnit::Millimetre);
     QCOMPARE(shown.toolIndex, 0);
     QCOMPARE(shown.name, QString("GX TEST"));
+    QCOMPARE(shown.vectors, io::PathVectorMeaning::Auto);
+    QCOMPARE(shown.points, io::PathPointMeaning::Auto);
+    auto* vectors = dialog.findChild<QComboBox*>("importVectors");
+    auto* points = dialog.findChild<QComboBox*>("importPoints");
+    QVERIFY(vectors && points);
+    vectors->setCurrentIndex(vectors->findData(int(io::PathVectorMeaning::ApproachDirection)));
+    points->setCurrentIndex(points->findData(int(io::PathPointMeaning::Contact)));
+    QCOMPARE(dialog.options().vectors, io::PathVectorMeaning::ApproachDirection);
+    QCOMPARE(dialog.options().points, io::PathPointMeaning::Contact);
     ddfcam::test::dumpFrame(dialog.grab().toImage(), "path_import_dialog");
   }
 

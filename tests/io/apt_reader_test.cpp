@@ -63,8 +63,8 @@ TEST(AptReader, ReadsCommentsContinuationBlanksAndCase) {
 }
 
 TEST(AptReader, ReadsPartnoWithAndWithoutSlash) {
-  EXPECT_EQ(read("PARTNO CORE_WORK\n").partName, "CORE_WORK");
-  EXPECT_EQ(read("PARTNO/ABC 12\n").partName, "ABC 12");
+  EXPECT_EQ(read("PARTNO CORE_WORK\nGOTO/0,0,0\n").partName, "CORE_WORK");
+  EXPECT_EQ(read("PARTNO/ABC 12\nGOTO/0,0,0\n").partName, "ABC 12");
 }
 
 TEST(AptReader, ConvertsInchesAndFeedsInBothOrders) {
@@ -131,24 +131,72 @@ TEST(AptReader, TakesTheToolAxisFromSixValueGotosWithOrWithoutMultax) {
   const ClProgram p = read("GOTO/0,0,0,0,0,2\nGOTO/1,0,0\nMULTAX/ON\nGOTO/1,1,0,0,3,4\n");
   ASSERT_EQ(p.points.size(), 3u);
   EXPECT_EQ(p.points[0].axis, ddf::Vec3(0, 0, 1));
-  EXPECT_FALSE(p.points[1].axis.has_value());
+  EXPECT_EQ(p.points[1].axis, ddf::Vec3(0, 0, 1));  // the axis in force
   EXPECT_NEAR((*p.points[2].axis - ddf::Vec3(0, 0.6, 0.8)).norm(), 0.0, 1e-15);
   EXPECT_TRUE(p.multiAxis());
 }
 
+TEST(AptReader, KeepsATiltedAxisOverThreeValueGotosUntilMultaxOff) {
+  const ClProgram p =
+      read("GOTO/0,0,0\nGOTO/1,0,0,0,0.6,0.8\nGOTO/2,0,0\nGOTO/3,0,0\nMULTAX/OFF\nGOTO/4,0,0\n");
+  ASSERT_EQ(p.points.size(), 5u);
+  EXPECT_FALSE(p.points[0].axis.has_value());  // nothing given yet: 3-axis
+  for (int i = 1; i <= 3; ++i) {
+    ASSERT_TRUE(p.points[i].axis.has_value()) << i;
+    EXPECT_NEAR((*p.points[i].axis - ddf::Vec3(0, 0.6, 0.8)).norm(), 0.0, 1e-15) << i;
+  }
+  EXPECT_FALSE(p.points[4].axis.has_value());
+  // An arc after a tilted GOTO keeps the tilt on every interpolated point.
+  const ClProgram arc =
+      read("GOTO/1,0,0,0,0.6,0.8\nCIRCLE/0,0,0,0,0,1,1\nGOTO/0,1,0\n", {.chordToleranceMm = 0.01});
+  ASSERT_GT(arc.points.size(), 3u);
+  for (const ClPoint& q : arc.points) {
+    ASSERT_TRUE(q.axis.has_value());
+    EXPECT_NEAR((*q.axis - ddf::Vec3(0, 0.6, 0.8)).norm(), 0.0, 1e-15);
+  }
+}
+
+TEST(AptReader, RefusesAProgramWithoutMotion) {
+  EXPECT_THAT(errorOf(""), HasSubstr("snippet.apt: no GOTO or FROM record"));
+  EXPECT_THAT(errorOf("PARTNO EMPTY\nUNITS/MM\nLOADTL/1\nFINI\n"),
+              HasSubstr("holds no tool motion"));
+}
+
+TEST(AptReader, KeepsEveryToolOfAMultiToolProgram) {
+  const ClProgram p = read(
+      "LOADTL/1\nCUTTER/10,5\nGOTO/0,0,0\nGOTO/1,0,0\n"
+      "LOADTL/2\nCUTTER/6\nRAPID\nGOTO/5,0,0\nGOTO/6,0,0\n"
+      "LOADTL/2\nGOTO/7,0,0\n"  // the same tool again: no change
+      "LOADTL/7\nCUTTER/3,1\nGOTO/8,0,0\n");
+  ASSERT_EQ(p.points.size(), 6u);
+  EXPECT_EQ(p.toolNumber, 1);
+  EXPECT_EQ(p.cutter, (ClCutter{10, 5, 0, 5, 0, 0, 0}));
+  ASSERT_EQ(p.toolChanges.size(), 2u);
+  EXPECT_EQ(p.toolChanges[0].firstPoint, 2u);
+  EXPECT_EQ(p.toolChanges[0].toolNumber, 2);
+  EXPECT_EQ(p.toolChanges[0].cutter, (ClCutter{6, 0, 3, 0, 0, 0, 0}));
+  EXPECT_EQ(p.toolChanges[0].sourceLine, 6);
+  EXPECT_EQ(p.toolChanges[1].firstPoint, 5u);
+  EXPECT_EQ(p.toolChanges[1].toolNumber, 7);
+  EXPECT_EQ(p.toolChanges[1].cutter, (ClCutter{3, 1, 0.5, 1, 0, 0, 0}));
+  EXPECT_TRUE(read("LOADTL/3\nGOTO/0,0,0\nGOTO/1,0,0\n").toolChanges.empty());
+}
+
 TEST(AptReader, RecordsToolData) {
-  const ClProgram a = read("LOADTL/8\nCUTTER/10,2,3,2,0,0,40\nSPINDL/2000,CLW\nCOOLNT/FLOOD\n");
+  const ClProgram a =
+      read("LOADTL/8\nCUTTER/10,2,3,2,0,0,40\nSPINDL/2000,CLW\nCOOLNT/FLOOD\nGOTO/0,0,0\n");
   EXPECT_EQ(a.toolNumber, 8);
   EXPECT_EQ(a.cutter, (ClCutter{10, 2, 3, 2, 0, 0, 40}));
   EXPECT_DOUBLE_EQ(a.spindleRpm, 2000.0);
   EXPECT_TRUE(a.coolant);
-  const ClProgram b = read("UNITS/INCHES\nTLDATA/MILL,1.0000,0.5000,3.0000,0.0000,0.0000\n");
+  const ClProgram b =
+      read("UNITS/INCHES\nTLDATA/MILL,1.0000,0.5000,3.0000,0.0000,0.0000\nGOTO/0,0,0\n");
   ASSERT_TRUE(b.cutter.has_value());
   EXPECT_DOUBLE_EQ(b.cutter->diameterMm, 25.4);
   EXPECT_DOUBLE_EQ(b.cutter->cornerRadiusMm, 12.7);
   EXPECT_DOUBLE_EQ(b.cutter->eMm, 0.0);
   EXPECT_DOUBLE_EQ(b.cutter->heightMm, 76.2);
-  EXPECT_EQ(read("CUTTER/6\n").cutter, (ClCutter{6, 0, 3, 0, 0, 0, 0}));
+  EXPECT_EQ(read("CUTTER/6\nGOTO/0,0,0\n").cutter, (ClCutter{6, 0, 3, 0, 0, 0, 0}));
 }
 
 TEST(AptReader, KeepsUnknownWordsAsCommentsWithOneWarningEach) {
@@ -167,7 +215,7 @@ TEST(AptReader, KeepsUnknownWordsAsCommentsWithOneWarningEach) {
   EXPECT_TRUE(hasWarning(p, "'LOAD'"));
   EXPECT_TRUE(hasWarning(p, "MSYS"));
   EXPECT_EQ(p.points.size(), 1u);  // nothing after FINI is read
-  EXPECT_FALSE(hasWarning(read("MSYS/0,0,0,1,0,0,0,1,0\n"), "MSYS"));
+  EXPECT_FALSE(hasWarning(read("MSYS/0,0,0,1,0,0,0,1,0\nGOTO/0,0,0\n"), "MSYS"));
 }
 
 TEST(AptReader, ReportsBadInputWithTheLineNumber) {
@@ -203,7 +251,8 @@ TEST(AptReader, NeverCrashesOnRandomInput) {
       const ClProgram p = read(text);
       for (const ClPoint& q : p.points) ASSERT_TRUE(q.positionMm.allFinite());
     } catch (const IoError& e) {
-      EXPECT_THAT(e.what(), HasSubstr("snippet.apt: line "));
+      EXPECT_THAT(e.what(), ::testing::AnyOf(HasSubstr("snippet.apt: line "),
+                                             HasSubstr("snippet.apt: no GOTO or FROM record")));
     }
   }
 }

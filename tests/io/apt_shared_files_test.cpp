@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -28,7 +29,11 @@ const fs::path kPaths = fs::path(DDFCAM_SHARED_DATA_DIR) / "paths";
 struct RawScan {
   std::map<int, std::vector<double>> gotos;    ///< line -> values
   std::map<int, std::vector<double>> circles;  ///< line -> values
-  int withAxis = 0;
+  /// line -> the tool axis in force there: the axis of the last 6-value GOTO (APT keeps it
+  /// over 3-value ones); none before the first.
+  std::map<int, std::optional<ddf::Vec3>> axes;
+  int withAxis = 0;  ///< GOTOs with an axis in force
+  int sixValue = 0;  ///< GOTOs that give an axis
   ddf::Vec3 lo = ddf::Vec3::Constant(1e300);
   ddf::Vec3 hi = ddf::Vec3::Constant(-1e300);
 };
@@ -44,6 +49,7 @@ RawScan scan(const fs::path& file) {
   RawScan raw;
   std::ifstream in(file);
   int number = 0;
+  std::optional<ddf::Vec3> axis;
   for (std::string line; std::getline(in, line);) {
     ++number;
     std::string head = line.substr(0, 6);
@@ -51,7 +57,10 @@ RawScan scan(const fs::path& file) {
     if (head.rfind("GOTO", 0) == 0) {
       const std::vector<double> v = valuesAfterSlash(line);
       raw.gotos[number] = v;
-      raw.withAxis += v.size() == 6;
+      if (v.size() == 6) axis = ddf::Vec3(v[3], v[4], v[5]).normalized();
+      raw.sixValue += v.size() == 6;
+      raw.axes[number] = axis;
+      raw.withAxis += axis.has_value();
       for (int d = 0; d < 3; ++d) {
         raw.lo[d] = std::min(raw.lo[d], v[d]);
         raw.hi[d] = std::max(raw.hi[d], v[d]);
@@ -79,6 +88,9 @@ void expectMatchesRawScan(const ClProgram& p, const RawScan& raw, double per) {
     if (it == raw.gotos.end()) continue;
     ++gotoPoints;
     withAxis += q.axis.has_value();
+    const std::optional<ddf::Vec3>& inForce = raw.axes.at(q.sourceLine);
+    EXPECT_EQ(q.axis.has_value(), inForce.has_value()) << "line " << q.sourceLine;
+    if (q.axis && inForce) EXPECT_LT((*q.axis - *inForce).norm(), 1e-12) << q.sourceLine;
     for (int d = 0; d < 3; ++d) EXPECT_NEAR(q.positionMm[d], it->second[d] * per, 1e-9);
     lo = lo.cwiseMin(q.positionMm);
     hi = hi.cwiseMax(q.positionMm);
@@ -119,7 +131,8 @@ TEST(AptSharedFiles, ReadsTheNxVariableAxisFileInInches) {
   const fs::path file = kPaths / "mech491-nx-clsf" / "APT_Variable_Axis.txt";
   const RawScan raw = scan(file);
   ASSERT_EQ(raw.gotos.size(), 348u);
-  ASSERT_EQ(raw.withAxis, 329);
+  ASSERT_EQ(raw.sixValue, 329);  // shared/data/README.md
+  ASSERT_EQ(raw.withAxis, 348);  // the first GOTO gives one: every later GOTO keeps an axis
   const ClProgram p = readApt(file);
   EXPECT_EQ(p.sourceUnit, LengthUnit::Inch);
   EXPECT_EQ(p.points.size(), 348u);

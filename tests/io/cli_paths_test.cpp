@@ -15,7 +15,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "cli_simulate_support.h"
@@ -133,6 +135,52 @@ TEST(CliPaths, VariableAxisProgramAsFiveAxisGCodeIsAcceptedByRs274) {
   for (std::string line; std::getline(calls, line);)
     moves += line.find("STRAIGHT_") != std::string::npos ? 1 : 0;
   EXPECT_EQ(moves, truth.points.size() + 3);
+}
+
+TEST(CliPaths, MachineFileWritesTheHaasPostsAxesAndRefusesWhatDoesNotFit) {
+  SKIP_WITHOUT_SHARED_PATHS();
+  test::ScratchDir dir;
+  const fs::path in = kPaths / "mech491-nx-clsf/APT_Variable_Axis.txt";
+  const fs::path haas = fs::path(DDFCAM_SOURCE_DIR) / "resources/machines/haas-umc750.json";
+  CliRun run =
+      cli(dir, "paths", {in.string(), "-o", (dir / "h.ngc").string(), "--machine", haas.string()});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const std::string ngc = test::readBytes(dir / "h.ngc");
+  EXPECT_THAT(ngc, HasSubstr("(machine: Haas UMC-750"));
+  EXPECT_THAT(ngc, HasSubstr("G234 H"));
+  // NX's post moves to B-22.201 C1.05 first (3 and 2 decimals); ours writes 4.
+  const std::size_t b = ngc.find(" B", ngc.find("\nG0 X"));  // the first move with B and C
+  ASSERT_NE(b, std::string::npos);
+  double bDeg = 0.0, cDeg = 0.0;
+  ASSERT_EQ(std::sscanf(ngc.c_str() + b, " B%lf C%lf", &bDeg, &cDeg), 2);
+  EXPECT_NEAR(bDeg, -22.201, 1e-3);
+  EXPECT_NEAR(cDeg, 1.05, 5e-3);
+  run = cli(dir, "paths",
+            {in.string(), "-o", (dir / "h.ngc").string(), "--machine", haas.string(), "--dialect",
+             "5axis-bc"});
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_THAT(run.err, HasSubstr("--machine replaces --dialect"));
+  run =
+      cli(dir, "paths", {in.string(), "-o", (dir / "h.csv").string(), "--machine", haas.string()});
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_THAT(run.err, HasSubstr("--machine applies to G-code output"));
+  std::ofstream(dir / "bad.json") << R"({"name": "x", "tilt_direction": 2})";
+  run =
+      cli(dir, "paths",
+          {in.string(), "-o", (dir / "h.ngc").string(), "--machine", (dir / "bad.json").string()});
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_THAT(run.err, HasSubstr("\"tilt_direction\" must be 1 or -1"));
+}
+
+TEST(CliPaths, AnEmptyProgramIsAnErrorNotAnEmptyFile) {
+  test::ScratchDir dir;
+  std::ofstream(dir / "empty.apt") << "PARTNO EMPTY\nUNITS/MM\nFINI\n";
+  const CliRun run =
+      cli(dir, "paths", {(dir / "empty.apt").string(), "-o", (dir / "out.ngc").string()});
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_THAT(run.err, HasSubstr("holds no tool motion"));
+  EXPECT_THAT(run.out, ::testing::Not(HasSubstr("inf")));
+  EXPECT_FALSE(fs::exists(dir / "out.ngc"));
 }
 
 /// z = h of every raster point of @p ddf, in the order of allHeights().

@@ -11,7 +11,9 @@
 #include <fstream>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <sstream>
+#include <vector>
 
 namespace ddfcam::io {
 namespace {
@@ -345,6 +347,113 @@ TEST(GCodeWriter, RefusesWhatItCannotWrite) {
   for (ClPoint& p : steep.points) p.axis = p.normal;
   EXPECT_THAT([&] { encodeGCode(steep, ball, limited); },
               ::testing::ThrowsMessage<InvalidInput>(::testing::HasSubstr("outside the machine")));
+}
+
+/// A tool reference program along x with the given axes (empty: no axis given).
+ClProgram referencePoints(const std::vector<std::optional<ddf::Vec3>>& axes) {
+  ClProgram program;
+  program.pointKind = ClPointKind::ToolReference;
+  for (std::size_t i = 0; i < axes.size(); ++i) {
+    ClPoint p;
+    p.point = static_cast<int>(i);
+    p.positionMm = {10.0 * static_cast<double>(i), 5.0, 2.0};
+    p.axis = axes[i];
+    p.feedMmPerMin = 600.0;
+    program.points.push_back(p);
+  }
+  return program;
+}
+
+TEST(GCodeWriter, PointWithoutAnAxisKeepsTheAxisInForce) {
+  const ddf::Vec3 tilted = unitFromAngles(0.4, 2.0);
+  const ClProgram program = referencePoints({std::nullopt, tilted, std::nullopt, std::nullopt});
+  GCodeWriteParams params;
+  params.mode = Mode::FiveAxis;
+  params.kinematics.pair = planning::RotaryPair::BC;
+  const std::vector<Motion> moves =
+      pointMotions(encodeGCode(program, cutter(planning::ToolKind::BallEnd, 3.0), params), 4);
+  ASSERT_EQ(moves.size(), 4u);
+  const auto axisOf = [&](const Motion& m) {
+    return planning::forwardKinematics(params.kinematics, {xyz(m), m.axes.at('B'), m.axes.at('C')})
+        .axis;
+  };
+  EXPECT_LT((axisOf(moves[0]) - ddf::Vec3::UnitZ()).norm(), 1e-6);  // before any axis: +Z
+  for (int i = 1; i < 4; ++i) EXPECT_LT((axisOf(moves[i]) - tilted).norm(), 1e-5) << i;
+  // 3-axis output refuses the tilted points that carry no axis of their own too.
+  EXPECT_THAT([&] { encodeGCode(program, cutter(planning::ToolKind::BallEnd, 3.0), {}); },
+              ::testing::ThrowsMessage<InvalidInput>(::testing::HasSubstr("point 1")));
+}
+
+TEST(GCodeWriter, AdviceForAnAxisItCannotWriteIsAdviceThatWorks) {
+  const planning::Tool ball = cutter(planning::ToolKind::BallEnd, 3.0);
+  GCodeWriteParams five;
+  five.mode = Mode::FiveAxis;
+  // Tilted by 30 deg: 3-axis says 5-axis, and 5-axis writes it.
+  const ClProgram tilted = referencePoints({unitFromAngles(kPi / 6, 0.3)});
+  EXPECT_THAT([&] { encodeGCode(tilted, ball, {}); },
+              ::testing::ThrowsMessage<InvalidInput>(::testing::HasSubstr("5-axis machine")));
+  EXPECT_NO_THROW(encodeGCode(tilted, ball, five));
+  // Pointing up from below: neither machine reaches it, and neither message says 5-axis.
+  const ClProgram upward = referencePoints({ddf::Vec3(0, 0, -1)});
+  for (const GCodeWriteParams& params : {GCodeWriteParams{}, five}) {
+    try {
+      encodeGCode(upward, ball, params);
+      ADD_FAILURE() << "an upward axis was written";
+    } catch (const InvalidInput& e) {
+      EXPECT_THAT(e.what(), ::testing::HasSubstr("turn the part over"));
+      EXPECT_THAT(e.what(), ::testing::Not(::testing::HasSubstr("write it as 5-axis")));
+    }
+  }
+  // Turned over (the part rotated 180 deg about x), the same point is written.
+  EXPECT_NO_THROW(encodeGCode(referencePoints({ddf::Vec3(0, 0, 1)}), ball, {}));
+}
+
+TEST(GCodeWriter, ToolChangesGiveTheirToolAndStartTheSpindleAgain) {
+  ClProgram program = referencePoints({std::nullopt, std::nullopt, std::nullopt, std::nullopt});
+  program.toolNumber = 1;
+  program.spindleRpm = 3000.0;
+  program.toolChanges = {{.firstPoint = 2, .toolNumber = 4, .toolName = "flat 6"},
+                         {.firstPoint = 3, .toolNumber = 9, .toolName = "ball 2"}};
+  const std::string text = encodeGCode(program, cutter(planning::ToolKind::BallEnd, 3.0), {});
+  const auto count = [&](const std::string& word) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1))
+      ++n;
+    return n;
+  };
+  EXPECT_EQ(count("T1 M6"), 1u);
+  EXPECT_EQ(count("T4 M6"), 1u);
+  EXPECT_EQ(count("T9 M6"), 1u);
+  EXPECT_EQ(count("G43 H4"), 1u);
+  EXPECT_EQ(count("S3000.0 M3"), 3u);
+  // Each change comes after point 1 (resp. 2) and before the next point, at the safe plane.
+  const std::size_t change = text.find("T4 M6");
+  EXPECT_LT(text.find("X10.0000"), change);
+  EXPECT_GT(text.find("G1 X20.0000"), change);
+  const std::vector<Motion> all = parseMotions(text);
+  // 2 safe rapids, 4 points, 2 x (retract + over the next point), the final retract.
+  ASSERT_EQ(all.size(), 11u);
+  EXPECT_EQ(all[4].g, 0);
+  EXPECT_NEAR(all[4].axes.at('Z'), all[0].axes.at('Z'), 1e-12);
+}
+
+TEST(GCodeWriter, ToolCentrePointPositionsAreTheTipInThePartFrame) {
+  const ddf::Vec3 tilted = unitFromAngles(0.5, 1.0);
+  const ClProgram program = referencePoints({tilted, tilted, tilted});
+  GCodeWriteParams params;
+  params.mode = Mode::FiveAxis;
+  params.kinematics.pair = planning::RotaryPair::BC;
+  params.kinematics.pivotMm = {0.0, 0.0, -120.0};  // would move machine X Y Z a lot
+  params.tcpPositions = true;
+  params.tcpOnBlock = "G234 H{tool}";
+  params.tcpOffBlock = "G49";
+  const std::string text = encodeGCode(program, cutter(planning::ToolKind::BallEnd, 3.0), params);
+  EXPECT_THAT(text, ::testing::HasSubstr("\nG234 H1\n"));
+  EXPECT_THAT(text, ::testing::Not(::testing::HasSubstr("G43 H1")));
+  EXPECT_THAT(text, ::testing::HasSubstr("\nG49\nM5 M9"));
+  const std::vector<Motion> moves = pointMotions(text, 3);
+  for (std::size_t i = 0; i < 3; ++i)
+    EXPECT_LT((xyz(moves[i]) - program.points[i].positionMm).norm(), 1e-4) << i;
 }
 
 TEST(GCodeWriter, WriteGCodeWritesTheEncodedText) {

@@ -66,16 +66,20 @@ ddf::DisplacementField crsPart() {
   return ddf::DisplacementField(std::move(support), std::move(vectors), 3);
 }
 
+/// A sanding disc: a flat end of radius 12 mm whose face (the tip plane) is the pad.
+planning::Tool sandingDisc() {
+  return {.name = "sanding disc",
+          .kind = planning::ToolKind::FlatEnd,
+          .radiusMm = 12.0,
+          .widthMm = 10.0};
+}
+
 TEST(ImportedPathShared, CrsSandingRasterLiesOnThePartAndGrindsOnlyAlongIt) {
   const ddf::DisplacementField part = crsPart();
   const ClProgram program = readCrsCsv();
   ASSERT_EQ(program.points.size(), 98u);
   ASSERT_EQ(program.pathCount(), 7);
-  // A sanding disc: a flat end of radius 12 mm whose face (the tip plane) is the pad.
-  const planning::Tool disc{.name = "sanding disc",
-                            .kind = planning::ToolKind::FlatEnd,
-                            .radiusMm = 12.0,
-                            .widthMm = 10.0};
+  const planning::Tool disc = sandingDisc();
   PlaceProgramParams params;
   params.actualUnit = LengthUnit::Metre;
   const ImportedPath placed = placeProgram(program, disc, part, params);
@@ -95,11 +99,11 @@ TEST(ImportedPathShared, CrsSandingRasterLiesOnThePartAndGrindsOnlyAlongIt) {
   const double median = distances[distances.size() / 2];
   RecordProperty("points_on_part", 98 - placed.pointsOffPart);
   RecordProperty("median_contact_distance_mm", std::to_string(median));
-  RecordProperty("max_contact_distance_mm", std::to_string(placed.maxContactDistanceMm));
+  RecordProperty("max_contact_distance_mm", std::to_string(placed.maxAbsContactDistanceMm));
   std::cout << "CRS part_2: " << 98 - placed.pointsOffPart << " of 98 points on the part, |contact"
-            << " distance| median " << median << " mm, max on part " << placed.maxContactDistanceMm
-            << " mm, max " << distances.back() << " mm; axis along the part normal at "
-            << alongNormal << " of 98\n";
+            << " distance| median " << median << " mm, max on part "
+            << placed.maxOnPartContactDistanceMm.value_or(-1.0) << " mm, max " << distances.back()
+            << " mm; axis along the part normal at " << alongNormal << " of 98\n";
   for (const ClMessage& w : placed.warnings)
     std::cout << "  line " << w.line << ": " << w.text << "\n";
   EXPECT_GE(98 - placed.pointsOffPart, 90);  // a raster ON the part
@@ -150,6 +154,79 @@ TEST(ImportedPathShared, CrsSandingRasterLiesOnThePartAndGrindsOnlyAlongIt) {
   EXPECT_GT(double(atAllowance), 0.95 * double(untouched));
   EXPECT_LT(stats.minMm, 0.0);
   EXPECT_GT(stats.materialLeftPercent, 50.0);  // a sparse raster of a 12 mm disc on 1.2 m
+}
+
+TEST(ImportedPathShared, CrsToolZAxisPointsOutOfThePartAndAutoReadsItAsToolAxis) {
+  // Independent of the DDF: part_2.stl is closed with a positive signed volume, so its facets
+  // wind outwards; each pose's z axis against the outward normal of the facet nearest to it.
+  ddf::TriangleMesh mesh = readMesh(kDir / "part_2.stl");
+  for (Vec3& v : mesh.vertices) v *= 1000.0;
+  double volume = 0.0;
+  std::vector<Vec3> centroids, normals;
+  for (const auto& t : mesh.triangles) {
+    const Vec3 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
+    volume += a.dot(b.cross(c)) / 6.0;
+    centroids.push_back((a + b + c) / 3.0);
+    normals.push_back((b - a).cross(c - a).normalized());
+  }
+  EXPECT_GT(volume, 0.0);
+  const ClProgram program = readCrsCsv();
+  int outwards = 0;
+  for (const ClPoint& p : program.points) {
+    const Vec3 q = 1000.0 * p.positionMm;
+    std::size_t nearest = 0;
+    for (std::size_t f = 1; f < centroids.size(); ++f)
+      if ((centroids[f] - q).squaredNorm() < (centroids[nearest] - q).squaredNorm()) nearest = f;
+    if (p.axis->dot(normals[nearest]) > 0.9) ++outwards;
+  }
+  EXPECT_EQ(outwards, 98);  // the tool z axis is the outward normal: tip-to-holder, not approach
+
+  const ddf::DisplacementField part = crsPart();
+  const planning::Tool disc = sandingDisc();
+  PlaceProgramParams params;
+  params.actualUnit = LengthUnit::Metre;
+  params.vectorMeaning = PathVectorMeaning::Auto;
+  params.pointMeaning = PathPointMeaning::Auto;
+  const ImportedPath detected = placeProgram(program, disc, part, params);
+  const PathConvention& c = detected.convention;
+  std::cout << "CRS part_2 auto: " << c.reason << "\n  " << detected.pointsOffPart
+            << " of 98 off the part, max |contact distance| " << detected.maxAbsContactDistanceMm
+            << " mm, on the part " << detected.maxOnPartContactDistanceMm.value_or(-1.0) << " mm, "
+            << detected.gougingPoses << " gouging (deepest " << detected.maxGougeDepthMm
+            << " mm)\n";
+  EXPECT_EQ(c.vectors, PathVectorMeaning::ToolAxis);
+  EXPECT_TRUE(c.vectorsDetected);
+  EXPECT_EQ(c.sampled, 98);
+  EXPECT_GE(c.vectorsOut, 95);
+  EXPECT_EQ(c.vectorsIn, 0);
+  // A disc's tip touches: contacts and tips look alike, the CSV's tool points are kept.
+  EXPECT_EQ(c.points, ClPointKind::ToolReference);
+  EXPECT_LT(std::abs(c.medianPointDistanceMm), 0.5);
+  // Auto gives what the explicit tool-axis reading gives.
+  const ImportedPath axes = placeProgram(program, disc, part, {.actualUnit = LengthUnit::Metre});
+  ASSERT_EQ(axes.path.poses.size(), detected.path.poses.size());
+  for (std::size_t i = 0; i < axes.path.poses.size(); ++i)
+    EXPECT_TRUE(axes.path.poses[i].pose.isApprox(detected.path.poses[i].pose, 1e-12)) << i;
+  // Read as approach directions the disc stands upside down in the part: every pose gouges.
+  PlaceProgramParams approach = params;
+  approach.vectorMeaning = PathVectorMeaning::ApproachDirection;
+  const ImportedPath wrong = placeProgram(program, disc, part, approach);
+  std::cout << "CRS part_2 as approach: " << wrong.gougingPoses << " gouging, max |contact "
+            << "distance| " << wrong.maxAbsContactDistanceMm << " mm\n";
+  EXPECT_EQ(wrong.gougingPoses, 98);
+  // For the record: the disc tilted by the file's axes digs its rim in where the axis leaves
+  // the part's normal; read as contacts, the rim touches at the point instead.
+  PlaceProgramParams contact = params;
+  contact.pointMeaning = PathPointMeaning::Contact;
+  const ImportedPath touching = placeProgram(program, disc, part, contact);
+  std::cout << "CRS part_2 as contacts: " << touching.gougingPoses << " gouging (deepest "
+            << touching.maxGougeDepthMm << " mm), max |contact distance| "
+            << touching.maxAbsContactDistanceMm << " mm\n";
+  EXPECT_LE(touching.gougingPoses, detected.gougingPoses);
+  const bool warned = std::any_of(wrong.warnings.begin(), wrong.warnings.end(), [](const auto& w) {
+    return w.text.find("as tool axes (tip to holder) do") != std::string::npos;
+  });
+  EXPECT_TRUE(warned);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -239,7 +240,44 @@ TEST(ImportedPath, CutterContactsOnAPlaneAreAnalytic) {
   // Far above the plane: off the part.
   const ImportedPath d = placeProgram(oneCut({{10, 10, 30.0}}), ball, plane.ddf);
   EXPECT_EQ(d.pointsOffPart, 1);
-  EXPECT_EQ(d.maxContactDistanceMm, 0.0);
+  // The figures agree: the pose off the part is the farthest one, none is on the part.
+  EXPECT_NEAR(d.maxAbsContactDistanceMm, 30.0 - 0.25, 1e-6);
+  EXPECT_FALSE(d.maxOnPartContactDistanceMm.has_value());
+  EXPECT_EQ(d.gougingPoses, 0);
+}
+
+TEST(ImportedPath, PointsWithoutAnAxisKeepTheAxisInForce) {
+  const ddf::GeneratedSurface plane = ddf::planePatch({.m = 5});
+  const planning::Tool flat{.kind = planning::ToolKind::FlatEnd, .radiusMm = 2.0};
+  const double theta = 25.0 * std::numbers::pi / 180.0;
+  const Vec3 tilted(0.0, std::sin(theta), std::cos(theta));
+  // A tilted rapid (left out of the path), then cuts that give no axis of their own.
+  ClProgram program = oneCut({{8, 8, 5.0}, {10, 10, 1.0}, {11, 10, 1.0}, {12, 10, 1.0}});
+  program.points[0].axis = tilted;
+  program.points[0].move = planning::MoveKind::Rapid;
+  const ImportedPath placed = placeProgram(program, flat, plane.ddf);
+  ASSERT_EQ(placed.path.poses.size(), 3u);
+  for (const planning::PathPose& pose : placed.path.poses)
+    EXPECT_LE((pose.pose.linear() * Vec3::UnitZ() - tilted).norm(), 1e-12);
+  // Without any axis given, the default axis (+z).
+  program.points[0].axis.reset();
+  for (const planning::PathPose& pose : placeProgram(program, flat, plane.ddf).path.poses)
+    EXPECT_LE((pose.pose.linear() * Vec3::UnitZ() - Vec3::UnitZ()).norm(), 1e-12);
+}
+
+TEST(ImportedPath, AProgramWithToolChangesSaysItIsPlacedWithOneTool) {
+  const ddf::GeneratedSurface plane = ddf::planePatch({.m = 5});
+  const planning::Tool ball{.name = "ball 6", .kind = planning::ToolKind::BallEnd, .radiusMm = 3.0};
+  ClProgram program = oneCut({{10, 10, 0.25}, {11, 10, 0.25}, {12, 10, 0.25}});
+  program.toolNumber = 1;
+  program.toolChanges = {{.firstPoint = 2, .toolNumber = 5, .toolName = "flat", .sourceLine = 9}};
+  const ImportedPath placed = placeProgram(program, ball, plane.ddf);
+  const auto it =
+      std::find_if(placed.warnings.begin(), placed.warnings.end(),
+                   [](const ClMessage& m) { return m.text.find("T1, T5") != std::string::npos; });
+  ASSERT_NE(it, placed.warnings.end());
+  EXPECT_EQ(it->line, 9);
+  EXPECT_NE(it->text.find("'ball 6'"), std::string::npos) << it->text;
 }
 
 TEST(ImportedPath, PassesBreakWhereCuttingBreaks) {

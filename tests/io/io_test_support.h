@@ -4,6 +4,7 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/error.h>
+#include <ddfcam/io/cl_program.h>
 
 #include <gtest/gtest.h>
 
@@ -11,8 +12,10 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <random>
 #include <string>
+#include <vector>
 
 namespace ddfcam::test {
 
@@ -33,6 +36,18 @@ inline void expectBitwiseEqual(const ddf::DisplacementField& a, const ddf::Displ
   for (int f = 0; f < a.faceCount(); ++f) EXPECT_EQ(a.faceVertices(f), b.faceVertices(f)) << f;
   ASSERT_EQ(a.allHeights().size(), b.allHeights().size());
   EXPECT_TRUE(sameBits(a.allHeights().data(), b.allHeights().data(), 4 * a.allHeights().size()));
+}
+
+/// The tool axis in force at each point of @p program: its own, else the last one given
+/// before it (APT's axis is modal); none before the first.
+inline std::vector<std::optional<ddf::Vec3>> axesInForce(const io::ClProgram& program) {
+  std::vector<std::optional<ddf::Vec3>> axes;
+  std::optional<ddf::Vec3> last;
+  for (const io::ClPoint& p : program.points) {
+    if (p.axis) last = p.axis;
+    axes.push_back(last);
+  }
+  return axes;
 }
 
 /// A fresh directory under the system temp dir, removed with its content on destruction.

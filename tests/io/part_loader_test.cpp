@@ -68,7 +68,7 @@ TEST(PartLoader, NonManifoldMeshesLoseOnlyTheRejectedFaces) {
   LoadPartReport report;
   const auto field = loadPart(dir / "fin.obj", {}, &report);
   EXPECT_EQ(report.meshTriangles, 3);
-  EXPECT_EQ(report.droppedFaces, 1);
+  EXPECT_EQ(report.conversion.droppedFaces, 1);
   EXPECT_EQ(field.faceCount(), 2);
 }
 

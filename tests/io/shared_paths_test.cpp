@@ -34,6 +34,8 @@ const char* const kYaml = "crs-robotic-sanding/part_2_job_0_degrees.yaml";
 const char* const kCsv = "crs-robotic-sanding/part_2_job_0_degrees.xyzijk.csv";
 const char* const kLs = "crs-robotic-sanding/surface_cartesian.ls";
 const char* const kStl = "crs-robotic-sanding/part_2.stl";
+/// NX's Haas UMC-750 post of APT_Variable_Axis.txt: G-code, recognised by its content.
+const char* const kPosted = "mech491-nx-clsf/PostProcessed_Variable_Axis.txt";
 
 /// APT files with the unit their header or first FEDRAT gives (see shared/data/README.md).
 const std::map<std::string, LengthUnit> kAptFiles = {
@@ -68,6 +70,10 @@ TEST(SharedPaths, EveryFileIsReadOrKnownNotToBeAToolPath) {
                 notAPathMessage(entry.path()));
     } else if (kAptFiles.count(name) || name == kYaml || name == kLs) {
       EXPECT_GT(readPathFile(entry.path()).points.size(), 0u);
+    } else if (name == kPosted) {
+      EXPECT_EQ(detectPathFormat(entry.path(), test::readBytes(entry.path())), PathFormat::GCode);
+      EXPECT_THAT(test::ioErrorMessage([&] { readPathFile(entry.path()); }),
+                  HasSubstr(": G-code cannot be read"));
     } else if (name == kCsv) {
       PathReadParams params;
       params.csv.unitIfUnstated = LengthUnit::Metre;
@@ -78,7 +84,7 @@ TEST(SharedPaths, EveryFileIsReadOrKnownNotToBeAToolPath) {
   }
   for (const auto& [name, unit] : kAptFiles) EXPECT_TRUE(seen.count(name)) << name;
   for (const std::string& name : kNotPaths) EXPECT_TRUE(seen.count(name)) << name;
-  for (const char* name : {kYaml, kCsv, kLs}) EXPECT_TRUE(seen.count(name)) << name;
+  for (const char* name : {kYaml, kCsv, kLs, kPosted}) EXPECT_TRUE(seen.count(name)) << name;
   // The part mesh is a mesh: mesh_io reads it.
   EXPECT_GT(readMesh(kRoot / kStl).triangles.size(), 1000u);
 }
@@ -97,23 +103,17 @@ TEST(SharedPaths, RosYamlMatchesTheDerivedCsvAndTheRawText) {
   EXPECT_EQ(csv.pathCount(), 7);
   EXPECT_EQ(yaml.sourceUnit, LengthUnit::Metre);
   EXPECT_EQ(yaml.pointKind, ClPointKind::ToolReference);
-  // The derived CSV has two defects of its derivation (not of either reader), checked here so
-  // that a corrected file makes this test fail and be tightened: its last row is the
-  // process parameters' tool_offset pose (zero position, axis -z) instead of the YAML's last
-  // pose, and its path_index column starts each new path one pose early (13, 14, 14, 14, 14,
-  // 14, 15 rows where the YAML's 7 "poses" lists hold 14 each, see the raw text below).
-  EXPECT_EQ(csv.points[97].positionMm, ddf::Vec3::Zero());
-  EXPECT_LT((*csv.points[97].axis - ddf::Vec3(0, 0, -1)).norm(), 1e-6);
-  EXPECT_GT((yaml.points[97].positionMm - csv.points[97].positionMm).norm(), 100.0);
+  // The derived CSV is the YAML's poses, pose for pose: same path and point indices, and the
+  // tool z axis (the quaternion applied to +Z) as i,j,k.
   std::vector<int> yamlSizes(7, 0), csvSizes(7, 0);
   for (std::size_t i = 0; i < 98; ++i) {
     const ClPoint& a = yaml.points[i];
     const ClPoint& b = csv.points[i];
     ASSERT_TRUE(a.path >= 0 && a.path < 7 && b.path >= 0 && b.path < 7) << i;
+    EXPECT_EQ(a.path, b.path) << i;
     EXPECT_EQ(a.point, yamlSizes[a.path]++) << i;
     EXPECT_EQ(b.point, csvSizes[b.path]++) << i;
     EXPECT_EQ(a.move, MoveKind::Cut);
-    if (i == 97) break;
     // The CSV has 6 decimals in metres: 5e-4 mm of rounding.
     EXPECT_LE((a.positionMm - b.positionMm).cwiseAbs().maxCoeff(), 1e-3) << i;
     ASSERT_TRUE(a.axis && b.axis) << i;
@@ -128,7 +128,7 @@ TEST(SharedPaths, RosYamlMatchesTheDerivedCsvAndTheRawText) {
     return n;
   };
   EXPECT_EQ(yamlSizes, std::vector<int>(7, 14));
-  EXPECT_EQ(csvSizes, (std::vector<int>{13, 14, 14, 14, 14, 14, 15}));
+  EXPECT_EQ(csvSizes, std::vector<int>(7, 14));
   EXPECT_EQ(count("poses:"), 7u);
   std::vector<int> rawSizes;  // "- position:" items per "poses:" list
   for (std::size_t at = text.find("poses:"); at != std::string::npos;) {

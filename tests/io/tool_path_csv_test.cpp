@@ -11,9 +11,11 @@
 #include <cmath>
 #include <fstream>
 #include <locale>
+#include <optional>
 #include <random>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "io_test_support.h"
 
@@ -124,6 +126,7 @@ ClProgram randomProgram(std::mt19937& rng, ClPointKind kind) {
 }
 
 void expectSameToPrecision(const ClProgram& a, const ClProgram& b, double unitMm, int decimals) {
+  const std::vector<std::optional<ddf::Vec3>> axes = test::axesInForce(a);
   ASSERT_EQ(a.points.size(), b.points.size());
   EXPECT_EQ(a.pointKind, b.pointKind);
   const double lengthTolerance = 0.51 * std::pow(10.0, -decimals) * unitMm + 1e-9;
@@ -137,10 +140,12 @@ void expectSameToPrecision(const ClProgram& a, const ClProgram& b, double unitMm
     EXPECT_EQ(q.sourceLine, static_cast<int>(i) + 2) << i;
     EXPECT_LE((p.positionMm - q.positionMm).lpNorm<Eigen::Infinity>(), lengthTolerance) << i;
     EXPECT_NEAR(p.feedMmPerMin, q.feedMmPerMin, lengthTolerance) << i;
-    ASSERT_EQ(p.axis.has_value(), q.axis.has_value()) << i;
+    // A blank axis cell keeps the axis in force, as APT does.
+    const std::optional<ddf::Vec3>& inForce = axes[i];
+    ASSERT_EQ(inForce.has_value(), q.axis.has_value()) << i;
     ASSERT_EQ(p.normal.has_value(), q.normal.has_value()) << i;
-    if (p.axis) {
-      EXPECT_LE((*p.axis - *q.axis).norm(), vectorTolerance) << i;
+    if (inForce) {
+      EXPECT_LE((*inForce - *q.axis).norm(), vectorTolerance) << i;
     }
     if (p.normal) {
       EXPECT_LE((*p.normal - *q.normal).norm(), vectorTolerance) << i;
@@ -321,8 +326,10 @@ TEST(ToolPathCsv, BadInputNamesTheLine) {
   };
   for (const auto& [text, expected] : cases)
     EXPECT_THAT(errorOf(text, {.maxRows = 2}), HasSubstr(expected)) << "input: " << text;
-  // A header alone is an empty program, not an error.
-  EXPECT_TRUE(decodeToolPathCsv(own, "h.csv").points.empty());
+  // A header alone holds no path: an error like every other reader's empty program, not an
+  // empty program that downstream would turn into an empty G-code file.
+  EXPECT_THAT([&] { decodeToolPathCsv(own, "h.csv"); },
+              ::testing::ThrowsMessage<IoError>(HasSubstr("h.csv: a header but no data row")));
 }
 
 TEST(ToolPathCsv, GarbageNeverCrashesTheReader) {

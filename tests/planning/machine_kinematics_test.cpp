@@ -180,6 +180,76 @@ TEST(MachineKinematics, LimitsAreRefusedWithAReason) {
   EXPECT_NEAR(c.pose->tiltDeg, -20.0, 1e-9);
 }
 
+/// Oracle of reversed axes: the Haas UMC convention written out, axis = (sin B cos C,
+/// sin B sin C, cos B) for a B/C table whose B and C count against the right-hand rule.
+ddf::Vec3 reversedBcAxis(double bDeg, double cDeg) {
+  const double b = rad(bDeg), c = rad(cDeg);
+  return {std::sin(b) * std::cos(c), std::sin(b) * std::sin(c), std::cos(b)};
+}
+
+TEST(MachineKinematics, ReversedDirectionsNegateTheRightHandedAngles) {
+  TableKinematics right = machine(RotaryPair::BC);
+  TableKinematics reversed = right;
+  reversed.tiltDirection = -1.0;
+  reversed.rotaryDirection = -1.0;
+  std::mt19937 rng(7);
+  for (int i = 0; i < 200; ++i) {
+    const ddf::Vec3 axis = randomAxis(rng, 100.0);
+    const ddf::Vec3 tip(10.0 * i, -3.0, 40.0);
+    const InverseKinematicsResult a = inverseKinematics(right, tip, axis, {});
+    const InverseKinematicsResult b = inverseKinematics(reversed, tip, axis, {});
+    ASSERT_TRUE(a.pose && b.pose) << i;
+    EXPECT_NEAR(b.pose->tiltDeg, -a.pose->tiltDeg, 1e-9) << i;
+    EXPECT_NEAR(b.pose->rotaryDeg, -a.pose->rotaryDeg, 1e-9) << i;
+    EXPECT_LT((b.pose->xyzMm - a.pose->xyzMm).norm(), 1e-9) << i;
+    // Against the written-out convention, and forward of inverse.
+    EXPECT_LT((reversedBcAxis(b.pose->tiltDeg, b.pose->rotaryDeg) - axis).norm(), 1e-9) << i;
+    const PartToolPose back = forwardKinematics(reversed, *b.pose);
+    EXPECT_LT((back.axis - axis).norm(), 1e-9) << i;
+    EXPECT_LT((back.tipMm - tip).norm(), 1e-9) << i;
+  }
+}
+
+TEST(MachineKinematics, PreferredSolutionChoosesTheTiltSign) {
+  TableKinematics k;
+  k.pair = RotaryPair::BC;
+  const ddf::Vec3 axis(std::sin(rad(25)) * std::cos(rad(10)), std::sin(rad(25)) * std::sin(rad(10)),
+                       std::cos(rad(25)));
+  for (const RotarySolution s : {RotarySolution::PositiveTilt, RotarySolution::NegativeTilt}) {
+    k.solution = s;
+    // From a previous pose that favours the other branch, the preference still wins.
+    const MachinePose previous{{}, s == RotarySolution::PositiveTilt ? -25.0 : 25.0, 0.0};
+    const InverseKinematicsResult r = inverseKinematics(k, {0, 0, 0}, axis, previous);
+    ASSERT_TRUE(r.pose);
+    EXPECT_NEAR(std::abs(r.pose->tiltDeg), 25.0, 1e-9);
+    EXPECT_EQ(r.pose->tiltDeg > 0.0, s == RotarySolution::PositiveTilt);
+    EXPECT_LT((forwardKinematics(k, *r.pose).axis - axis).norm(), 1e-9);
+  }
+  // When the preferred branch is beyond the limits, the other one is taken.
+  k.solution = RotarySolution::PositiveTilt;
+  k.tiltMinDeg = -90.0;
+  k.tiltMaxDeg = 20.0;
+  const InverseKinematicsResult r = inverseKinematics(k, {0, 0, 0}, axis, {});
+  ASSERT_TRUE(r.pose);
+  EXPECT_NEAR(r.pose->tiltDeg, -25.0, 1e-9);
+  k.tiltDirection = 0.5;
+  EXPECT_THROW(validateKinematics(k), InvalidInput);
+}
+
+TEST(MachineKinematics, UnreachableAxisSaysWhatWouldReachIt) {
+  TableKinematics k;
+  const InverseKinematicsResult down = inverseKinematics(k, {0, 0, 0}, {0, 0, -1}, {});
+  ASSERT_FALSE(down.pose);
+  EXPECT_NE(down.reason.find("turn the part over"), std::string::npos) << down.reason;
+  const ddf::Vec3 steep(0.0, std::sin(rad(130)), std::cos(rad(130)));
+  const InverseKinematicsResult far = inverseKinematics(k, {0, 0, 0}, steep, {});
+  ASSERT_FALSE(far.pose);
+  EXPECT_NE(far.reason.find("limits include +130"), std::string::npos) << far.reason;
+  // The advice holds: a machine tilting to 130 reaches it.
+  k.tiltMaxDeg = 135.0;
+  EXPECT_TRUE(inverseKinematics(k, {0, 0, 0}, steep, {}).pose);
+}
+
 TEST(MachineKinematics, BadInputThrows) {
   const TableKinematics k;
   EXPECT_THROW(inverseKinematics(k, {0, 0, 0}, {0, 0, 2}, {}), InvalidInput);

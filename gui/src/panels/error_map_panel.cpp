@@ -18,6 +18,7 @@
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
+#include <limits>
 #include <memory>
 
 namespace ddfcam::gui {
@@ -35,8 +36,8 @@ QDoubleSpinBox* bandSpin(QWidget* parent, const char* name, double value) {
 }
 
 // The desired heights on the part's own support: a stored state as it is, or the design mesh
-// put onto the stubbles (points whose stubble misses the mesh keep the part's height and so
-// show no deviation).
+// put onto the stubbles. Points whose stubble misses the mesh get NaN, so they have no
+// deviation and count against the coverage instead of as "in tolerance".
 std::vector<float> desiredHeights(const ddf::DisplacementField& part,
                                   const std::optional<std::vector<float>>& state,
                                   const std::optional<ddf::TriangleMesh>& design,
@@ -45,7 +46,12 @@ std::vector<float> desiredHeights(const ddf::DisplacementField& part,
   planning::StockWorkpieceParams params;
   params.requireFullCoverage = false;
   params.fill.progress = progress;
-  return planning::workpieceFromStockMesh(part, *design, params).workpiece.allHeights();
+  planning::StockWorkpiece stock = planning::workpieceFromStockMesh(part, *design, params);
+  std::vector<float> heights = std::move(stock.workpiece.allHeights());
+  for (std::size_t l = 0; l < heights.size(); ++l)
+    if (l < stock.missingMask.size() && stock.missingMask[l] != 0)
+      heights[l] = std::numeric_limits<float>::quiet_NaN();
+  return heights;
 }
 
 }  // namespace
@@ -54,8 +60,7 @@ ErrorMapPanel::ErrorMapPanel(Workbench& workbench, QWidget* parent) : Panel(work
   buildInputs();
   buildOutputs();
   connect(&workbench.document, &Document::changed, this, [this](Changes what) {
-    if (what & (Change::Part | Change::States | Change::Regions | Change::Paths))
-      refreshChoices();
+    if (what & (Change::Part | Change::States | Change::Regions | Change::Paths)) refreshChoices();
     if (what & (Change::Part | Change::Fields | Change::Regions)) updateStatistics();
   });
   refreshChoices();

@@ -16,6 +16,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 namespace ddfcam::gui {
 namespace {
@@ -35,6 +37,29 @@ QString percent(double value) {
   return QString::number(value, 'f', 1) + QStringLiteral(" %");
 }
 
+std::vector<std::uint8_t> finiteMask(const planning::ScalarField& field) {
+  std::vector<std::uint8_t> mask(field.values.size());
+  for (std::size_t l = 0; l < mask.size(); ++l) mask[l] = std::isfinite(field.values[l]) ? 1 : 0;
+  return mask;
+}
+
+// The coverage line, with a warning below kLowPathCoveragePercent, and the clamping line.
+QString coverageText(const planning::Coverage& c, const planning::CrustClamping& clamped) {
+  QString text = QObject::tr("coverage %1 of the region (%2 of %3 mm²)")
+                     .arg(percent(c.percent()), QString::number(c.coveredAreaMm2, 'f', 1),
+                          QString::number(c.totalAreaMm2, 'f', 1));
+  if (c.percent() < planning::kLowPathCoveragePercent)
+    text += QObject::tr("\nwarning: the statistics describe only %1 of the region")
+                .arg(percent(c.percent()));
+  if (clamped.points > 0)
+    text += QObject::tr(
+                "\nwarning: %1 raster points (%2 mm²) were cut below the crust bottom and "
+                "clamped: the true overcut is deeper there, min is only a bound")
+                .arg(clamped.points)
+                .arg(clamped.areaMm2, 0, 'f', 2);
+  return text;
+}
+
 QTableWidgetItem* cell(const QString& text) {
   auto* item = new QTableWidgetItem(text);
   item->setFlags(item->flags() & ~Qt::ItemIsEditable);
@@ -49,8 +74,8 @@ void ErrorMapPanel::buildOutputs() {
   stats_->setObjectName("errorStatisticsLabel");
   stats_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   stats_->setWordWrap(true);
-  // Room for the five lines of statistics, so the table below never squeezes them.
-  stats_->setMinimumHeight(6 * stats_->fontMetrics().lineSpacing());
+  // Room for the statistics and their coverage, so the table below never squeezes them.
+  stats_->setMinimumHeight(8 * stats_->fontMetrics().lineSpacing());
   layout->addWidget(stats_);
   path_ = new QComboBox(this);
   path_->setObjectName("errorPathCombo");
@@ -68,12 +93,15 @@ void ErrorMapPanel::buildOutputs() {
                                             tr("rel. error")});
   scallopTable_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   layout->addWidget(scallopTable_, 1);
-  connect(alongPath_, &QPushButton::clicked, this, [this] { plotAlongPath(path_->currentIndex()); });
+  connect(alongPath_, &QPushButton::clicked, this,
+          [this] { plotAlongPath(path_->currentIndex()); });
   connect(scallop_, &QPushButton::clicked, this, [this] { computeScallopTable(); });
 }
 
 void ErrorMapPanel::updateStatistics() {
   statistics_.reset();
+  coverage_.reset();
+  clamping_.reset();
   const planning::Project& p = workbench().document.project();
   const planning::ScalarField* field = deviationField();
   if (field != nullptr && p.part) {
@@ -81,6 +109,8 @@ void ErrorMapPanel::updateStatistics() {
     runUserAction(workbench().reportError, tr("Error statistics"), [&] {
       const planning::ToleranceBand band = toleranceBand();
       statistics_ = planning::errorStatistics(*field, *p.part, band, faces);
+      coverage_ = planning::maskCoverage(*p.part, finiteMask(*field), faces);
+      clamping_ = planning::crustClamping(*field, *p.part, faces);
       const double lo = std::min(statistics_->minMm, 2.0 * band.lowerMm);
       double hi = std::max(statistics_->maxMm, 2.0 * band.upperMm);
       if (!(hi > lo)) hi = lo + 1e-3;
@@ -98,12 +128,14 @@ void ErrorMapPanel::showStatistics() {
     return;
   }
   const planning::ErrorStatistics& s = *statistics_;
-  stats_->setText(tr("max %1, min %2\nmean %3, RMS %4\nin tolerance %5\nmaterial left %6, "
-                     "overcut %7\narea %8 mm², %9 raster points")
-                      .arg(mm(s.maxMm), mm(s.minMm), mm(s.meanMm), mm(s.rmsMm),
-                           percent(s.inTolerancePercent), percent(s.materialLeftPercent),
-                           percent(s.overcutPercent), QString::number(s.areaMm2, 'f', 1))
-                      .arg(s.points));
+  stats_->setText(
+      tr("max %1, min %2\nmean %3, RMS %4\nin tolerance %5\nmaterial left %6, "
+         "overcut %7\narea %8 mm², %9 raster points")
+          .arg(mm(s.maxMm), mm(s.minMm), mm(s.meanMm), mm(s.rmsMm), percent(s.inTolerancePercent),
+               percent(s.materialLeftPercent), percent(s.overcutPercent),
+               QString::number(s.areaMm2, 'f', 1))
+          .arg(s.points) +
+      (coverage_ && clamping_ ? '\n' + coverageText(*coverage_, *clamping_) : QString()));
 }
 
 bool ErrorMapPanel::plotAlongPath(int index) {

@@ -244,11 +244,24 @@ void MouldPanel::indexRasterCopies(const ddf::DisplacementField& ddf) {
 
 void MouldPanel::showResultText(const planning::SurfaceComparison& r) {
   const planning::ErrorStatistics& s = r.statistics;
-  stats_->setText(tr("max %1, min %2\nmean %3, sigma %4\nwithin %5 .. %6: %7 %\narea %8 mm²")
-                      .arg(mm(s.maxMm), mm(s.minMm), mm(s.meanMm), mm(s.sigmaMm),
-                           mm(r.band.lowerMm), mm(r.band.upperMm),
-                           QString::number(s.inTolerancePercent, 'f', 1),
-                           QString::number(s.areaMm2, 'f', 1)));
+  const planning::ComparisonCoverage c = planning::comparisonCoverage(r);
+  QString text = tr("max %1, min %2\nmean %3, sigma %4\nwithin %5 .. %6: %7 %\narea %8 mm²")
+                     .arg(mm(s.maxMm), mm(s.minMm), mm(s.meanMm), mm(s.sigmaMm), mm(r.band.lowerMm),
+                          mm(r.band.upperMm), QString::number(s.inTolerancePercent, 'f', 1),
+                          QString::number(s.areaMm2, 'f', 1));
+  text += tr("\ncoverage %1 % of the mould's %2 mm²")
+              .arg(QString::number(c.compared.percent(), 'f', 2))
+              .arg(QString::number(c.compared.totalAreaMm2, 'f', 1));
+  if (c.compared.percent() < planning::kLowComparisonCoveragePercent)
+    text += tr("\nwarning: the statistics describe only %1 % of the mould")
+                .arg(QString::number(c.compared.percent(), 'f', 2));
+  if (r.sequence.stalled)
+    text += tr("\nwarning: %1").arg(QString::fromStdString(planning::stallAdvice(r)));
+  if (c.unresolvedFaces > 0)
+    text += tr("\nwarning: %1 unresolved faces (%2 mm²) left out of the statistics")
+                .arg(c.unresolvedFaces)
+                .arg(QString::number(c.unresolvedAreaMm2, 'f', 1));
+  stats_->setText(text);
   const auto& seq = r.sequence;
   crossing_->setText(
       seq.crossingFaces.empty()
@@ -267,8 +280,8 @@ void MouldPanel::showHistogram(const planning::SurfaceComparison& r,
   const double lo = std::min(s.minMm, 2.0 * r.band.lowerMm);
   double hi = std::max(s.maxMm, 2.0 * r.band.upperMm);
   if (!(hi > lo)) hi = lo + 1e-3;
-  const planning::AreaHistogram histogram =
-      planning::errorHistogram(r.deviation, ddf, kHistogramBins, lo, hi);
+  const planning::AreaHistogram histogram = planning::errorHistogram(
+      r.deviation, ddf, kHistogramBins, lo, hi, planning::resolvedFaces(r));
   QCustomPlot* plot = workbench().plots.plot(kHistogramTab);
   setAreaHistogramBars(plot, histogram, r.band,
                        {kShortOfMouldBarsName, kInToleranceBarsName, kBeyondMouldBarsName});

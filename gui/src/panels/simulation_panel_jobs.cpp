@@ -10,6 +10,7 @@
 #include <ddfcam/gui/panels/simulation_panel.h>
 #include <ddfcam/gui/path_commands.h>
 #include <ddfcam/io/mesh_io.h>
+#include <ddfcam/planning/coverage.h>
 #include <ddfcam/planning/grinding_simulation.h>
 #include <ddfcam/planning/penetration_correction.h>
 #include <ddfcam/planning/preston_removal.h>
@@ -65,7 +66,32 @@ QString grindingText(const planning::ToolPath& path, const planning::GrindingSim
     lines << QObject::tr("Colliding poses: %1%2")
                  .arg(r.collisions.size())
                  .arg(r.collisions.empty() ? QString() : ": " + poseList(r.collisions));
+  if (r.pointsClamped > 0)
+    lines << QObject::tr(
+                 "Warning: %1 heights were cut below the crust bottom and clamped to it: "
+                 "the true cut is deeper there")
+                 .arg(r.pointsClamped);
   return lines.join('\n');
+}
+
+/// The share of the part the tool came within reach of (planning::pathCoverage), with a
+/// warning when it is tiny: a path that misses the part "succeeds" otherwise.
+QString coverageText(const planning::Coverage& c) {
+  QString text = QObject::tr("Coverage: the tool touched %1 % of the part (%2 of %3 mm²)")
+                     .arg(c.percent(), 0, 'f', 2)
+                     .arg(c.coveredAreaMm2, 0, 'f', 1)
+                     .arg(c.totalAreaMm2, 0, 'f', 1);
+  if (c.percent() < planning::kLowPathCoveragePercent)
+    text += QObject::tr(
+        "\nWarning: the path touches almost none of the part; check its frame, "
+        "unit and placement");
+  return text;
+}
+
+/// Maps [0, 1] of a sub-task onto [from, to] of @p progress.
+ProgressCallback subProgress(const ProgressCallback& progress, double from, double to) {
+  if (!progress) return {};
+  return [progress, from, to](double x) { return progress(from + (to - from) * x); };
 }
 
 QString prestonText(const planning::ToolPath& path, const planning::PrestonReport& r,
@@ -130,7 +156,12 @@ bool SimulationPanel::simulatePath(int index) {
     const planning::GrindingSimulationParams grinding = options_->grindingParams();
     const planning::PrestonParams prestonParams = options_->prestonParams();
     const QString title = tr("Simulate path '%1'").arg(QString::fromStdString(path.name));
-    started = startJob(title, [=, this](const ProgressCallback& progress) {
+    started = startJob(title, [=, this](const ProgressCallback& whole) {
+      planning::PathCoverageParams coverage;
+      coverage.progress = subProgress(whole, 0.0, 0.2);
+      const QString touched =
+          coverageText(planning::pathCoverage(*part, tool, path, coverage).coverage);
+      const ProgressCallback progress = subProgress(whole, 0.2, 1.0);
       QString text;
       if (preston) {
         QElapsedTimer clock;
@@ -144,6 +175,7 @@ bool SimulationPanel::simulatePath(int index) {
             planning::simulateGrinding(*part, planning::toolMeshes(tool), path, grinding, progress);
         text = grindingText(path, grinding, r);
       }
+      text += '\n' + touched;
       return std::function<void()>([this, part, path, title, text, preston] {
         const std::string name = (preston ? "Preston after " : "after ") + path.name;
         workbench().document.push(std::make_unique<SetHeightsCommand>(

@@ -26,6 +26,13 @@ struct DeformationSequenceParams {
   /// Most DDFs in the sequence; faces still crossing in the last stage are reported as
   /// unresolved. >= 1. Default 12.
   int maxStages = 12;
+  /// Stop early, with the faces still crossing reported unresolved and DeformationSequence::
+  /// stalled set, after this many consecutive splits that made no headway: each carried less
+  /// than a quarter of the remaining deformation and the crossing faces fell by less than 10 %.
+  /// That happens when the deformed surface lies far beyond the crust the mould's support allows
+  /// (a dense or noisy mould whose vectors cross at small heights, mould and formed swapped, a
+  /// bad alignment); more stages would only cost time. 0 = never. Default 2.
+  int stallStages = 2;
   /// Progress in [0, 1] and cancellation (throws Cancelled). Default none.
   ProgressCallback progress;
 };
@@ -62,6 +69,10 @@ struct DeformationSequence {
   std::vector<int> unresolvedFaces;
   /// Raster point copies whose chain missed the deformed surface (NaN in deformedPoints).
   std::size_t missingPoints = 0;
+  /// The sequence stopped early because it made no headway (DeformationSequenceParams::
+  /// stallStages): unresolvedFaces then holds the faces still crossing, usually many, and the
+  /// deformed points are a poor approximation. Not stored with a mould study.
+  bool stalled = false;
 };
 
 /// @brief Represents @p deformed as heights over the mould DDF @p mould, splitting the
@@ -73,8 +84,9 @@ struct DeformationSequence {
 /// crustSafety x h0 / |h|) over the crossing faces of its heights: the next support is this
 /// support with every vertex moved by t h v (vertices whose stubble missed move by the mean of
 /// their neighbours' moves), and the next stage is built on it with fresh pseudo-normals, until
-/// no face crosses or maxStages is reached. The vector field thus follows the deformation
-/// and the crust stays unique-projection (the dissertation's remedy at the end of ch. 9).
+/// no face crosses, maxStages is reached or the splitting stalls (stallStages). The vector field
+/// thus follows the deformation and the crust stays unique-projection (the dissertation's remedy at
+/// the end of ch. 9).
 /// @param mould DDF whose support is the mould surface (heights are ignored), mm.
 /// @param deformed deformed surface, mm, in the mould's frame (already aligned).
 /// @throws InvalidInput for an empty mesh or bad parameters. @throws Cancelled via progress.

@@ -2,9 +2,11 @@
 // ddfcam: baseline conversion of a triangle mesh into a DDF with the mesh as support (ch. 6).
 #pragma once
 
+#include <ddfcam/ddf/conversion_report.h>
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/pseudo_normals.h>
 #include <ddfcam/ddf/triangle_mesh.h>
+#include <ddfcam/ddf/validation.h>
 #include <ddfcam/ddf/vector_lengths.h>
 #include <ddfcam/progress.h>
 
@@ -16,8 +18,10 @@ namespace ddfcam::ddf {
 struct ConversionParams {
   /// Raster resolution m of the DDF (points per support edge, >= 2). Default 10.
   int resolution = 10;
-  /// Vertices closer than this are welded into one, mm; 0 = 1e-9 x the bounding-box diagonal
-  /// (merges exact duplicates as in an unwelded STL). Default 0.
+  /// Vertices closer than this are welded into one, mm; 0 = the larger of 1e-9 x the
+  /// bounding-box diagonal (merges exact duplicates as in an unwelded STL) and
+  /// validation.coincidentToleranceMm (what the check of constraint 2 calls coincident).
+  /// Default 0.
   double weldToleranceMm = 0.0;
   /// Direction repair margin for constraint 1. Default: PseudoNormalParams defaults.
   PseudoNormalParams normals;
@@ -29,16 +33,23 @@ struct ConversionParams {
   /// steps, for callers that set lengths and heights themselves (e.g. a deformation sequence,
   /// which resets the lengths). Default true.
   bool chooseLengths = true;
+  /// Check the result against the three constraints with validate() (as `ddfcam-cli info`
+  /// does) and repair what the conversion can: one vector for coincident vertices
+  /// (constraint 2), shorter vectors for crust heights and crossing crusts (constraint 3).
+  /// Ignored when chooseLengths is false. Default true.
+  bool validateResult = true;
+  /// The check of the result (and the coincidence tolerance of the weld). Default:
+  /// ValidationParams defaults, the check `ddfcam-cli info` runs.
+  ValidationParams validation;
   /// Progress in [0, 1] and cancellation (throws Cancelled). Default none.
   ProgressCallback progress;
 };
 
 /// @brief The converted DDF and what the conversion had to give up.
 struct ConversionResult {
-  DisplacementField ddf;                ///< support = the welded input mesh, heights by fill
-  int droppedFaces = 0;                 ///< triangles OpenMesh rejected (non-manifold, flipped)
-  int degenerateFaces = 0;              ///< triangles dropped for a repeated vertex or zero area
-  int weldedVertices = 0;               ///< input vertices merged into another one
+  DisplacementField ddf;  ///< support = the welded input mesh, heights by fill
+  /// Counts of every repair and drop, the input's topology and the check of the result.
+  ConversionReport report;
   std::vector<int> sourceTriangle;      ///< per DDF face, the index of its input triangle
   std::vector<int> repairedVertices;    ///< DDF vertices whose direction left the pseudo-normal
   std::vector<int> infeasibleVertices;  ///< DDF vertices with no front-facing direction
@@ -49,14 +60,18 @@ struct ConversionResult {
 
 /// @brief Converts @p mesh into a DDF whose support is the mesh itself (the baseline of ch. 6).
 ///
-/// Steps: weld vertices; drop triangles with a repeated vertex or zero area; build the support
-/// mesh, dropping (with a warning through ddfcam::log) the triangles OpenMesh rejects as
-/// non-manifold or inconsistently oriented, and unused vertices; directions = angle-weighted
-/// pseudo-normals repaired for constraint 1; lengths by chooseVectorLengths; heights by the
+/// Steps: weld vertices; drop triangles with a repeated vertex or zero area and repeats of an
+/// earlier triangle's corners; build the support mesh, dropping (with a warning through
+/// ddfcam::log) the triangles OpenMesh rejects as non-manifold or inconsistently oriented, and
+/// unused vertices (all counted in the report); directions = angle-weighted pseudo-normals
+/// repaired for constraint 1; lengths by chooseVectorLengths; the check of the three
+/// constraints and its repairs (see ConversionParams::validateResult); heights by the
 /// depth buffer's fill mode from the input mesh (the nearest intersection of every stubble with
 /// it in [-1, 1]; lengths and fill are skipped when params.chooseLengths is false). With the mesh
 /// as support the heights come out ~0 and the represented surface lies on the input up to float
-/// rounding (one-sided Hausdorff distance checked in the tests).
+/// rounding (one-sided Hausdorff distance checked in the tests). A result that still violates a
+/// constraint is returned, not thrown: report.valid() is false and report.validation and
+/// conversionProblemLines() say where and why; the caller decides whether to use it.
 /// @throws InvalidInput for a bad resolution, an index out of range, or when no triangle
 /// survives. @throws Cancelled through params.progress.
 ConversionResult convertMeshToDdf(const TriangleMesh& mesh, const ConversionParams& params = {});

@@ -28,6 +28,9 @@ struct VectorLengthParams {
   bool uniformShrink = false;
   /// Also resolve intersections of the +-1 crusts of faces sharing no vertex. Default true.
   bool checkNonAdjacent = true;
+  /// Vertices closer than this count as one for the non-adjacent test (an unwelded seam does
+  /// not separate faces), mm; 0 = 1e-9 x the bounding-box diagonal. Default 0.
+  double coincidentToleranceMm = 0.0;
   /// Factor applied to the vectors of the six vertices of a conflicting face pair per round.
   /// In (0, 1). Default 0.8.
   double conflictShrink = 0.8;

@@ -121,6 +121,8 @@ class MainWindow : public QMainWindow {
   ConsoleDock* console_ = nullptr;
   QMenu* panelsMenu_ = nullptr;
   QMenu* recentMenu_ = nullptr;
+  /// Verdict on the part converted last when it is not a valid DDF; shown in the status.
+  QString conversionWarning_;
   std::unique_ptr<Document> document_;
   std::unique_ptr<JobRunner> jobs_;
   std::unique_ptr<PartView> partView_;

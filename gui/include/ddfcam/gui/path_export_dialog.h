@@ -18,6 +18,7 @@ class QDialogButtonBox;
 class QLabel;
 class QLineEdit;
 class QListWidget;
+class QPushButton;
 class QSettings;
 class QSpinBox;
 
@@ -69,7 +70,14 @@ struct PathExportOptions {
   PathExportGrouping grouping = PathExportGrouping::OneFile;  ///< files (default one)
   std::vector<int> paths;  ///< indices into Project::paths to write, ascending (default none)
   QString filePath;        ///< the file (OneFile) or the base of the region files
+  /// G-code: a machine file (io/machine_file.h: rotary axes, directions, pivot, limits,
+  /// solution, TCP) that replaces the dialect's generic table; empty: the dialect (default).
+  QString machineFile;
 };
+
+/// @brief One line describing the machine file of G-code @p options (name, rotary axes, tilt
+/// limits, how X Y Z are written); empty when there is none or it cannot be read.
+QString exportMachineName(const PathExportOptions& options);
 
 /// @brief Range of PathExportOptions::coordinateDecimals for @p format (low, high): CSV 0..17,
 /// APT 4..6, G-code 3..6.
@@ -136,6 +144,7 @@ class PathExportDialog : public QDialog {
   void showOptions(const PathExportOptions& options);
   void refresh();
   void browse();
+  void browseMachine();
 
   const planning::Project& project_;
   QComboBox* format_ = nullptr;
@@ -147,6 +156,9 @@ class PathExportDialog : public QDialog {
   QComboBox* grouping_ = nullptr;
   QListWidget* paths_ = nullptr;
   QLineEdit* file_ = nullptr;
+  QLineEdit* machineFile_ = nullptr;
+  QPushButton* machineBrowse_ = nullptr;
+  QLabel* machineName_ = nullptr;
   QLabel* problem_ = nullptr;
   QDialogButtonBox* buttons_ = nullptr;
   bool updating_ = false;

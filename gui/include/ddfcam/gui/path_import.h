@@ -45,6 +45,11 @@ struct PathImportOptions {
   int toolIndex = 0;
   bool includeRapids = false;  ///< keep rapid moves as poses (default false)
   QString name;                ///< path name; empty: the program's part name or the file's
+  /// What the file's vectors are (tool axis, approach direction, surface normal) (default
+  /// Auto: decided from the part).
+  io::PathVectorMeaning vectors = io::PathVectorMeaning::Auto;
+  /// What the file's points are (contacts or tool reference points) (default Auto).
+  io::PathPointMeaning points = io::PathPointMeaning::Auto;
 };
 
 /// @brief What the import dialog shows: the file, the program read from it and the project.
@@ -82,7 +87,8 @@ bool importPathFile(const QString& file, Document& document, const WorkbenchDial
                     ConsoleDock* console);
 
 /// @brief The modal dialog of an import: the file's unit as read and an override, a transform
-/// (translation mm, rotation degrees), the tool, rapids and the path name.
+/// (translation mm, rotation degrees), the tool, what the vectors and points are, rapids and
+/// the path name.
 class PathImportDialog : public QDialog {
   Q_OBJECT
 
@@ -99,6 +105,8 @@ class PathImportDialog : public QDialog {
   QDoubleSpinBox* translation_[3] = {};
   QDoubleSpinBox* rotation_[3] = {};
   QComboBox* tool_ = nullptr;
+  QComboBox* vectors_ = nullptr;
+  QComboBox* points_ = nullptr;
   QCheckBox* rapids_ = nullptr;
   QLineEdit* name_ = nullptr;
 };

@@ -17,6 +17,10 @@ namespace ddfcam::planning {
 struct Project;
 }
 
+namespace ddfcam::ddf {
+struct ConversionReport;
+}
+
 namespace ddfcam::gui {
 
 class Document;
@@ -105,10 +109,17 @@ class ProjectActions : public QObject {
  signals:
   /// @brief A project or part was loaded into the document from @p path.
   void opened(const QString& path);
+  /// @brief A mesh file was converted to the document's part (emitted after opened()):
+  /// @p verdict is "<file>: valid DDF ..." or "<file>: INVALID DDF: violates constraint ...",
+  /// the same words `ddfcam-cli convert` prints; the repairs and problems went to the log.
+  void conversionReported(const QString& verdict, bool valid);
 
  private:
   bool startLoad(const QString& title, const QString& path,
                  std::function<void(const QString&)> onLoaded);
+  /// Logs what converting @p path did (repairs at Info, problems at Warning) and emits
+  /// conversionReported().
+  void announceConversion(const QString& path, const ddf::ConversionReport& report);
 
   Document& document_;
   JobRunner& jobs_;

@@ -39,7 +39,8 @@ ClCutter aptCutter(const planning::Tool& tool);
 /// name gives DDFCAM; '$' and control characters become '_'), UNITS, program.comments as "$$"
 /// lines (split at line ends and at the column limit), CUTTER (if program.cutter), LOADTL,
 /// SPINDL/rpm,CLW|CCLW (if spindleRpm > 0), COOLNT/ON (if program.coolant), MULTAX/ON (if
-/// program.multiAxis()), then per point RAPID (rapid moves), FEDRAT (when the feed of a non-rapid
+/// program.multiAxis()), then per point CUTTER and LOADTL where a tool change starts
+/// (ClProgram::toolChanges), RAPID (rapid moves), FEDRAT (when the feed of a non-rapid
 /// move changes) and GOTO/x,y,z[,i,j,k]; then COOLNT/OFF, SPINDL/OFF, END, FINI. A point without an
 /// axis in a multi-axis program is written with 3 values (APT keeps the previous axis). Positions
 /// and feeds are converted from mm to params.unit.

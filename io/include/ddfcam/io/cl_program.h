@@ -40,7 +40,10 @@ struct ClPoint {
   int point = 0;                             ///< 0-based index of the point within its path
   ddf::Vec3 positionMm = ddf::Vec3::Zero();  ///< contact or reference point (ClProgram::pointKind)
   /// Unit tool axis if the file gives one: the spindle (rotation) axis, for cutters from the
-  /// tip towards the holder (APT's i,j,k); wheels' rotation axis. Empty: 3-axis, or unknown.
+  /// tip towards the holder (APT's i,j,k); wheels' rotation axis. Empty: no axis given here,
+  /// so the axis in force applies (the last one given before this point, as APT's 3-value
+  /// GOTO keeps it); before any, 3-axis (+z) or the placement's default. Readers fill in the
+  /// axis in force, so a point read from a file has one once any point before it had one.
   std::optional<ddf::Vec3> axis;
   std::optional<ddf::Vec3> normal;  ///< unit surface normal at the contact, tool side, if given
   double feedMmPerMin = 0.0;        ///< feed, mm/min; 0 for rapid moves or when the file gives none
@@ -65,6 +68,18 @@ struct ClCutter {
   bool operator==(const ClCutter&) const = default;
 };
 
+/// @brief A tool change within a program (APT LOADTL/CUTTER/TLDATA after motion, G-code T M6):
+/// from points[firstPoint] on, this tool cuts.
+struct ClToolChange {
+  std::size_t firstPoint = 0;      ///< index into ClProgram::points of the first point it cuts
+  int toolNumber = 1;              ///< LOADTL / T number, >= 0
+  std::string toolName;            ///< tool name or description; may be empty
+  std::optional<ClCutter> cutter;  ///< its CUTTER record, if known
+  int sourceLine = 0;              ///< 1-based line of the record that changed it; 0 if none
+
+  bool operator==(const ClToolChange&) const = default;
+};
+
 /// @brief A diagnostic tied to a line of the file it was read from.
 struct ClMessage {
   int line = 0;      ///< 1-based source line; 0 if none
@@ -86,6 +101,9 @@ struct ClProgram {
   bool spindleClockwise = true;                        ///< spindle direction (default CLW)
   bool coolant = false;                                ///< coolant on during the cut
   std::vector<ClPoint> points;                         ///< points in machining order
+  /// Tools after the first, in order of increasing firstPoint (> 0); toolNumber, toolName and
+  /// cutter above describe the tool of the first point. Empty: one tool throughout.
+  std::vector<ClToolChange> toolChanges;
   std::vector<std::string> comments;  ///< comments and records kept as comments, in file order
   std::vector<ClMessage> warnings;    ///< what a reader noticed but could read past
 
@@ -96,5 +114,10 @@ struct ClProgram {
 
   bool operator==(const ClProgram&) const = default;
 };
+
+/// @brief @p program cut at its tool changes: one program per tool segment, in order, each
+/// with that tool's number, name and cutter in its header fields and no tool changes; path
+/// indices renumbered from 0 within each. Segments without points are left out.
+std::vector<ClProgram> splitByTool(const ClProgram& program);
 
 }  // namespace ddfcam::io

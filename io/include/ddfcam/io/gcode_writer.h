@@ -45,6 +45,18 @@ struct GCodeWriteParams {
   /// keeps the programmed feed over the part while the tables turn (pure rotations: degrees
   /// divided by the feed). Default false: G94, F in mm/min (inch/min).
   bool inverseTimeFeed = false;
+  /// FiveAxis: write X Y Z as the tool tip in the part frame, for a control that does the
+  /// kinematics itself (tool centre point control: Haas G234, LinuxCNC G43.4, Fanuc G43.4);
+  /// false: machine X Y Z from the kinematics (default false).
+  bool tcpPositions = false;
+  /// Block that switches the control's TCP on after each tool change, "{tool}" standing for
+  /// the tool number (e.g. "G234 H{tool}"); it replaces G43 H. Empty: none (default).
+  std::string tcpOnBlock;
+  /// Block that switches TCP off before a tool change and at the end (e.g. "G49"); empty: none
+  /// (default).
+  std::string tcpOffBlock;
+  /// Machine named in the header comment (a machine file's name); empty: none (default).
+  std::string machineName;
 };
 
 /// @brief The program as RS274NGC text (LinuxCNC dialect, one block per line, "\n" endings).
@@ -53,6 +65,9 @@ struct GCodeWriteParams {
 /// line per ClPoint: G0 X Y Z [A|B C] for rapid moves (no F), G1 ... F for cut and link moves (F in
 /// mm/min, or inch/min with G20, written when it changes; with inverseTimeFeed on every G1);
 /// every motion line carries its G word.
+/// At each ClProgram::toolChanges entry: retract to the safe plane, T M6 (G43 H) of that tool,
+/// G0 over its first point. A point without an axis keeps the axis in force (the last one
+/// given), +Z before any.
 /// End: G0 retract to the safe plane, M5 M9, M30.
 /// Positions: the tool tip (planning::Tool frame origin). For ClPointKind::Contact programs
 /// the tip is computed from the contact point c, the unit normal n (required) and the tool

@@ -13,9 +13,41 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace ddfcam::io {
+
+/// @brief What the vectors of a program (ClPoint::axis: APT's GOTO i,j,k, a CSV's i,j,k or
+/// axis columns, a robot pose's z axis) stand for. Robot programs often give the approach
+/// direction, CAM programs the tool axis; read the wrong way, the tool stands inside the part.
+enum class PathVectorMeaning {
+  Auto,               ///< decided from the part: pointing into it, approach; else tool axis
+  ToolAxis,           ///< spindle axis, cutters from the tip to the holder (APT); wheels' axis
+  ApproachDirection,  ///< the way the tool moves onto the part, from the holder through the
+                      ///< tip into it: cutters take the reversed vector as their axis, wheels
+                      ///< and balls the reversed vector as the surface normal
+  SurfaceNormal       ///< surface normal at the contact, part to tool: the tool stands along it
+};
+
+/// @brief What the positions of a program stand for, overriding ClProgram::pointKind.
+enum class PathPointMeaning {
+  Declared,       ///< ClProgram::pointKind as the reader found or assumed it
+  Auto,           ///< decided from the part: on its surface, contacts; a tool reference
+                  ///< height off it (wheel or ball centres), tool reference points
+  Contact,        ///< ClPointKind::Contact: points on the surface the tool touches
+  ToolReference,  ///< ClPointKind::ToolReference: cutter tips, wheel and ball centres
+};
+
+/// @brief Short name of @p meaning as options and reports write it: "auto", "axis",
+/// "approach" or "normal".
+std::string_view pathVectorMeaningName(PathVectorMeaning meaning);
+/// @brief Short name of @p meaning: "file", "auto", "contact" or "tip".
+std::string_view pathPointMeaningName(PathPointMeaning meaning);
+/// @brief The meaning named @p name by pathVectorMeaningName(); empty for another name.
+std::optional<PathVectorMeaning> pathVectorMeaningFromName(std::string_view name);
+/// @brief The meaning named @p name by pathPointMeaningName(); empty for another name.
+std::optional<PathPointMeaning> pathPointMeaningFromName(std::string_view name);
 
 /// @brief How placeProgram() maps a program onto a part.
 struct PlaceProgramParams {
@@ -51,8 +83,44 @@ struct PlaceProgramParams {
   /// wheel mantle touches with its rim at any non-zero angle, so rounding noise in the file's
   /// axes and normals would otherwise move the tool by a radius or half its width.
   double angleSnapDeg = 0.1;
+  /// What the program's vectors stand for (default ToolAxis, as APT defines its i,j,k).
+  PathVectorMeaning vectorMeaning = PathVectorMeaning::ToolAxis;
+  /// What the program's positions stand for (default Declared: ClProgram::pointKind).
+  PathPointMeaning pointMeaning = PathPointMeaning::Declared;
+  /// A pose whose tool reaches deeper than this into the part, or a cutter whose axis points
+  /// into it, is counted as gouging and warned about, mm, > 0 (default 0.2: above a grinding
+  /// infeed, below the millimetres a reversed vector costs).
+  double gougeWarnMm = 0.2;
   /// Progress in [0, 1] over the points and cancellation (default none).
   ProgressCallback progress{};
+};
+
+/// @brief The meanings placeProgram() used, and what the part said about them. Evidence comes
+/// from up to 512 cut points spread over the program, each with its nearest point on the part
+/// (smooth normal n there, signed distance s of the point, + on the tool side).
+struct PathConvention {
+  PathVectorMeaning vectors = PathVectorMeaning::ToolAxis;  ///< meaning used (never Auto)
+  ClPointKind points = ClPointKind::ToolReference;          ///< kind used
+  bool vectorsDetected = false;  ///< vectors decided by Auto (else given or nothing to decide)
+  bool pointsDetected = false;   ///< points decided by Auto
+  /// Cut points examined over the part. Those beside its border, whose nearest normal tells
+  /// nothing about their side, or farther from it than h + contactSearchMm + the tool's radius
+  /// and width are left out; with fewer than one in four over the part nothing is decided (a
+  /// path in another frame or unit).
+  int sampled = 0;
+  int leftOut = 0;     ///< cut points examined and left out: beside the part's border or far off
+  int vectorsOut = 0;  ///< of them, vectors pointing out of the part (v.n > 0.5)
+  int vectorsIn = 0;   ///< vectors pointing into it (v.n < -0.5)
+  int pointsOnSurface = 0;    ///< points nearer to the surface than to the reference height
+  int pointsAtReference = 0;  ///< points nearer to the reference height h (see below)
+  /// Height of the tool reference point above the contact for a tool standing along the
+  /// normal, mm: wheels' and balls' radius, 0 for cutters (their tip touches: contact and tip
+  /// cannot be told apart, and the declared kind is kept).
+  double referenceHeightMm = 0.0;
+  double medianPointDistanceMm = 0.0;  ///< median s of the sampled points, mm
+  /// One line on what was used and why, e.g. "vectors: approach directions (detected: they
+  /// point into the part at 98 of 98 sampled points)".
+  std::string reason;
 };
 
 /// @brief A program placed on a part: a path that simulation (planning/grinding_simulation.h,
@@ -75,17 +143,33 @@ struct ImportedPath {
   std::vector<int> sourcePoints;
   /// Poses with |contact distance| > contactSearchMm (off the part, or far from it).
   int pointsOffPart = 0;
-  /// Largest |contact distance| over the poses on the part, mm (0 if none is on it).
-  double maxContactDistanceMm = 0.0;
-  /// What placing noticed (off-part points, missing feed, dropped moves), with source lines.
+  /// Largest |contact distance| over all poses, mm (those off the part included).
+  double maxAbsContactDistanceMm = 0.0;
+  /// Largest |contact distance| over the poses on the part, mm; empty if none is on it.
+  std::optional<double> maxOnPartContactDistanceMm;
+  /// Poses over the part (not beside its border) reaching deeper than gougeWarnMm into it, or
+  /// (cutters) whose spindle axis points into it (axis . normal < 0 at the contact).
+  int gougingPoses = 0;
+  /// Deepest reach into the part over the poses over it, mm, >= 0 (0: none penetrates).
+  double maxGougeDepthMm = 0.0;
+  /// The vector and point meanings used, detected or given, and the evidence.
+  PathConvention convention;
+  /// What placing noticed (off-part points, gouges, vectors or points that look different from
+  /// what they were taken for, missing feed, dropped moves), with source lines.
   std::vector<ClMessage> warnings;
 };
 
 /// @brief Places @p program on @p part for @p tool.
 ///
 /// Positions are rescaled (params.actualUnit) and transformed (params.transform) into the part
-/// frame. Every kept point gives a tool reference point r and a unit spindle axis a, both in
-/// the part frame:
+/// frame. Vectors and positions are then read as params.vectorMeaning and params.pointMeaning
+/// say (Auto: decided from the part, see PathConvention; ties keep ToolAxis and the declared
+/// kind): ToolAxis keeps ClPoint::axis; ApproachDirection reverses it (cutters) or makes
+/// its reverse the point's normal, without axis (wheels, Sphere); SurfaceNormal makes it the
+/// normal, without axis. A ToolReference program left with normals and no axes becomes a
+/// Contact one: contact = point - the reference offset of planning::placeToolDetailed() at
+/// the normal (lead and tilt 0), feeding as below. Every kept point gives a tool reference point r
+/// and a unit spindle axis a, both in the part frame:
 /// - ToolReference programs: r = the point, a = its axis, else params.defaultAxis.
 /// - Contact programs: r = the point + the offset of planning::placeToolDetailed() at the
 ///   point's normal n (the file's, or the part's with normalsFromPart) feeding towards the next
@@ -110,15 +194,18 @@ struct ImportedPath {
 /// smooth normal there (towards the side the DDF vectors point to, the tool side), distance =
 /// +-|sample - foot| (- when the sample lies behind the surface) - reach. Wheels are
 /// probed at their centre only: exact for an untilted wheel (centre on the contact normal).
+/// Warnings: gouging poses (count and deepest), vectors or points the part shows to be
+/// something else than what they were taken for (a clear 2:1 majority of the sampled points),
+/// poses off the part.
 /// Cost: the raster mesh of the whole part (F (m-1)^2 triangles) is built once per call.
 ///
 /// @param part the part whose surface the contacts lie on (design or workpiece DDF), mm.
 /// @throws InvalidInput for an empty program (or no point left after dropping moves), a point
 /// with a non-finite position or a zero, non-finite axis or normal, a non-finite or non-rigid
-/// transform, a zero default axis, contactSearchMm <= 0, a negative toolIndex, an invalid tool
-/// (validateTool), a placement placeToolDetailed() refuses, or a Contact program point without
-/// a normal when normalsFromPart is false ("needs normals"); the message names the point and
-/// its source line. Cancelled through params.progress.
+/// transform, a zero default axis, contactSearchMm or gougeWarnMm <= 0, a negative toolIndex, an
+/// invalid tool (validateTool), a placement placeToolDetailed() refuses, or a Contact program point
+/// without a normal when normalsFromPart is false ("needs normals"); the message names the point
+/// and its source line. Cancelled through params.progress.
 ImportedPath placeProgram(const ClProgram& program, const planning::Tool& tool,
                           const ddf::DisplacementField& part,
                           const PlaceProgramParams& params = {});

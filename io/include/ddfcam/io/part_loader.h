@@ -22,18 +22,19 @@ struct LoadPartParams {
 
 /// @brief What loadPart() did besides returning the field.
 struct LoadPartReport {
-  bool converted = false;      ///< true if the file was a mesh converted to a DDF
-  int meshVertices = 0;        ///< vertices read from the mesh file (0 for .ddf)
-  int meshTriangles = 0;       ///< triangles read from the mesh file (0 for .ddf)
-  int droppedFaces = 0;        ///< triangles the conversion dropped as non-manifold or flipped
-  int degenerateFaces = 0;     ///< triangles dropped for a repeated vertex or zero area
-  int weldedVertices = 0;      ///< mesh vertices merged into another one
-  int repairedVertices = 0;    ///< vertices whose direction was repaired (constraint 1)
-  int infeasibleVertices = 0;  ///< vertices with no front-facing direction
+  bool converted = false;  ///< true if the file was a mesh converted to a DDF
+  int meshVertices = 0;    ///< vertices read from the mesh file (0 for .ddf)
+  int meshTriangles = 0;   ///< triangles read from the mesh file (0 for .ddf)
+  /// What the conversion repaired and dropped, and the check of its result against the three
+  /// DDF constraints (conversion.valid()); default-constructed for .ddf files. Describe it with
+  /// ddf::conversionVerdict, conversionRepairLines and conversionProblemLines.
+  ddf::ConversionReport conversion;
 };
 
 /// @brief Loads @p path as a DDF: a .ddf file through readDdf, a .stl/.obj/.ply/.off mesh
 /// through readMesh and ddf::convertMeshToDdf (the mesh becomes the support, heights 0).
+/// A converted field that violates a DDF constraint is still returned (with a warning through
+/// ddfcam::log); report->conversion says which constraint fails and where.
 /// @param report if not null, receives what the conversion did.
 /// @throws IoError "loading <file>" with the cause nested (missing or malformed file, unknown
 /// extension, a mesh the conversion rejects); Cancelled (not wrapped) through params.progress.

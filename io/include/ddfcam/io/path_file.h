@@ -42,9 +42,11 @@ std::vector<std::string> pathFileExtensions(PathFormat format);
 /// - .ngc/.nc/.gcode: GCode;
 /// - .apt/.cls/.cl/.ncl/.aptsource: Apt; .csv: Csv;
 /// - .txt: Apt when the first record (after "$$" comments) is an APT record (`WORD/...`,
-///   PARTNO, RAPID, ...), Csv when it is a row of numbers or a header line followed by one;
+///   PARTNO, RAPID, ...), GCode when the first lines after '%', an O word and comments are
+///   RS274 blocks (address words with a G or M word, as posts write them), Csv when the first
+///   line is a row of numbers or a header line followed by one;
 /// - any other extension: the same content tests, for FANUC, ROS YAML, APT (an APT first
-///   record and a GOTO in @p head) and CSV in that order.
+///   record and a GOTO in @p head), G-code and CSV in that order.
 /// Binary content (NUL or other control bytes) is never a path file.
 /// @return std::nullopt if the file is not a tool-path file of a known format.
 std::optional<PathFormat> detectPathFormat(const std::filesystem::path& file,

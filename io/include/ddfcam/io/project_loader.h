@@ -21,7 +21,10 @@ bool canOpenAsProject(const std::filesystem::path& path);
 /// "stock" with the initial heights; a mesh file is also kept as the design mesh, the surface
 /// the part is compared with).
 /// @param params conversion parameters and progress for part files (ignored for projects).
+/// @param report if not null, receives what loading the part did (converted = false for a
+/// project or a .ddf file): a mesh's repairs and whether it became a valid DDF.
 /// @throws IoError naming the file (nested cause); Cancelled through params.progress.
-planning::Project openProject(const std::filesystem::path& path, const LoadPartParams& params = {});
+planning::Project openProject(const std::filesystem::path& path, const LoadPartParams& params = {},
+                              LoadPartReport* report = nullptr);
 
 }  // namespace ddfcam::io

@@ -95,6 +95,23 @@ struct ErrorStatistics {
 ErrorStatistics errorStatistics(const ScalarField& deviation, const ddf::DisplacementField& ddf,
                                 const ToleranceBand& band, std::span<const int> faces = {});
 
+/// @brief Raster points of a simulated part where a cut was clamped at the crust bottom.
+struct CrustClamping {
+  std::size_t points = 0;  ///< distinct raster points (PointId)
+  double areaMm2 = 0.0;    ///< their area, mm^2 (weights rasterPointAreas() of the produced part)
+};
+
+/// @brief The raster points of the simulated part @p produced that lie at the crust bottom
+/// (h <= -1) with a finite negative @p deviation. The depth buffer and Preston removal clamp
+/// every cut deeper than the crust to h = -1 (ddf::cutByMesh), so the true overcut there is
+/// deeper than the map shows, and an error map's minMm is then only an upper bound of the
+/// deepest gouge (a 5 mm and a 0.5 mm plunge below the crust give the same minimum).
+/// @param faces region faces; empty = all faces.
+/// @throws InvalidInput if @p deviation is not sized like produced.allHeights() or a face is out
+/// of range.
+CrustClamping crustClamping(const ScalarField& deviation, const ddf::DisplacementField& produced,
+                            std::span<const int> faces = {});
+
 /// @brief Area per deviation bin.
 struct AreaHistogram {
   double lowerMm = 0.0;         ///< lower edge of bin 0, mm

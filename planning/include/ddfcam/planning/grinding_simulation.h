@@ -63,10 +63,14 @@ struct CollisionHit {
 
 /// @brief What the simulation did so far.
 struct GrindingReport {
-  int posesCut = 0;                             ///< poses cut
-  std::vector<PassRemoval> passes;              ///< one entry per pass started, in path order
-  double removedVolumeMm3 = 0.0;                ///< sum over passes, mm^3
-  std::size_t pointsLowered = 0;                ///< heights lowered (copies counted per face)
+  int posesCut = 0;                 ///< poses cut
+  std::vector<PassRemoval> passes;  ///< one entry per pass started, in path order
+  double removedVolumeMm3 = 0.0;    ///< sum over passes, mm^3
+  std::size_t pointsLowered = 0;    ///< heights lowered (copies counted per face)
+  /// Of the lowerings, those where the tool reached below the crust bottom and the height was
+  /// clamped to h = -1 (copies counted per face and pose): the true cut is deeper there than the
+  /// workpiece shows (see crustClamping() for the points left at the bottom).
+  std::size_t pointsClamped = 0;
   std::vector<VConvexityViolation> vConvexity;  ///< poses with violations, ascending
   std::size_t vConvexityStubbles = 0;           ///< sum of their stubble counts
   std::vector<CollisionHit> collisions;         ///< colliding poses, ascending

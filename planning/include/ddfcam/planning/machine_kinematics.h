@@ -16,14 +16,23 @@ enum class RotaryPair {
   BC   ///< tilt B about machine +Y, rotary table C
 };
 
+/// @brief Which of the two rotary solutions of a tool axis a machine takes.
+enum class RotarySolution {
+  Nearest,       ///< the one nearest to the previous position (|delta tilt| + |delta C|)
+  PositiveTilt,  ///< tilt >= 0 (as the control counts it) when within limits, else the other
+  NegativeTilt   ///< tilt <= 0 when within limits, else the other
+};
+
 /// @brief A table-table 5-axis machine: the spindle is fixed along machine +Z, the tables turn
-/// the part. Convention: a part point p maps to machine coordinates m = T (Rz(C) (p - Q) + Q - P) +
-/// P, where T = Rx(A) (AC) or Ry(B) (BC) are right-hand rotations by the angle in degrees, P =
-/// pivotMm and Q = pivotMm + rotaryOffsetMm. At A|B = 0, C = 0 the part frame coincides with the
-/// machine (work) frame. The tool axis in the part frame is then (sin A sin C, sin A cos C, cos A)
-/// for AC and
-/// (-sin B cos C, sin B sin C, cos B) for BC: a tool axis tilted towards part +y is A = +30,
-/// C = 0 (or A = -30, C = 180).
+/// the part. Convention: a part point p maps to machine coordinates m = T (Rz(c) (p - Q) + Q - P) +
+/// P, where T = Rx(t) (AC) or Ry(t) (BC) are right-hand rotations by the physical angles
+/// t = tiltDirection * A|B and c = rotaryDirection * C in degrees (A|B and C being the values the
+/// control is programmed with), P = pivotMm and Q = pivotMm + rotaryOffsetMm. At A|B = 0, C = 0 the
+/// part frame coincides with the machine (work) frame. The tool axis in the part frame is then
+/// (sin t sin c, sin t cos c, cos t) for AC and (-sin t cos c, sin t sin c, cos t) for BC: with
+/// both directions +1, a tool axis tilted towards part +y is A = +30, C = 0 (or A = -30,
+/// C = 180). Haas's UMC B/C trunnion counts both axes the other way (directions -1): there the
+/// axis is (sin B cos C, sin B sin C, cos B).
 struct TableKinematics {
   RotaryPair pair = RotaryPair::AC;  ///< rotary axes (default AC)
   /// A point of the tilting axis (A: parallel to X; B: parallel to Y), machine frame, mm
@@ -37,6 +46,14 @@ struct TableKinematics {
   bool rotaryLimited = false;    ///< whether C has limits (default false: endless table)
   double rotaryMinDeg = -360.0;  ///< lower limit of C when limited, degrees (default -360)
   double rotaryMaxDeg = 360.0;   ///< upper limit of C when limited, degrees (default 360)
+  /// +1: the programmed A|B turns the tilting table right-handed about machine +X|+Y; -1: the
+  /// other way (default +1).
+  double tiltDirection = 1.0;
+  /// +1: the programmed C turns the table right-handed about its normal (+Z at tilt 0); -1: the
+  /// other way (default +1).
+  double rotaryDirection = 1.0;
+  /// Which of the two solutions is taken (default Nearest).
+  RotarySolution solution = RotarySolution::Nearest;
   /// Tilt below which the axis counts as +Z (singular pose: C undetermined, the previous C is
   /// kept), degrees (default 1e-7, so the written axis is off by at most ~2e-9 rad).
   double singularToleranceDeg = 1e-7;
@@ -68,7 +85,8 @@ struct InverseKinematicsResult {
 };
 
 /// @brief Checks limits and offsets: finite values, tiltMinDeg < tiltMaxDeg within
-/// [-360, 360], rotaryMinDeg < rotaryMaxDeg when limited, singularToleranceDeg in (0, 1).
+/// [-360, 360], rotaryMinDeg < rotaryMaxDeg when limited, singularToleranceDeg in (0, 1),
+/// directions +1 or -1.
 /// @throws InvalidInput naming the offending field.
 void validateKinematics(const TableKinematics& kinematics);
 
@@ -77,13 +95,14 @@ void validateKinematics(const TableKinematics& kinematics);
 PartToolPose forwardKinematics(const TableKinematics& kinematics, const MachinePose& pose);
 
 /// @brief Machine positions putting the tool tip at @p tipMm with axis @p axis (part frame).
-/// Of the two solutions (tilt t, C) and (-t, C + 180) within the limits, chooses the one nearest
-/// to @p previous (|delta tilt| + |delta C|), with C unwrapped by multiples of 360 to the value
-/// nearest previous C (within the C limits if limited), so no move spins the table by 360.
+/// Of the two solutions (tilt t, C) and (-t, C + 180) within the limits, chooses by
+/// kinematics.solution (Nearest: the one nearest to @p previous, |delta tilt| + |delta C|),
+/// with C unwrapped by multiples of 360 to the value nearest previous C (within the C limits
+/// if limited), so no move spins the table by 360.
 /// At the singular pose (axis +Z within singularToleranceDeg) C stays at previous C.
 /// @param axis unit tool axis, part frame (|axis| within 1e-6 of 1).
-/// @return no pose, with a reason naming the axis and the limits, when both solutions lie
-/// outside the limits.
+/// @return no pose, with a reason naming the axis and the limits and saying what would reach
+/// it, when both solutions lie outside the limits.
 /// @throws InvalidInput if the inputs are not finite, the axis is not a unit vector, or the
 /// kinematics are invalid (validateKinematics()).
 InverseKinematicsResult inverseKinematics(const TableKinematics& kinematics, const ddf::Vec3& tipMm,

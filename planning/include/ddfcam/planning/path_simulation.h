@@ -25,7 +25,10 @@ struct PathSimulationParams {
 struct PathSimulationReport {
   int poses = 0;                  ///< poses cut
   std::size_t pointsLowered = 0;  ///< raster point heights lowered (copies counted per face)
-  double seconds = 0.0;           ///< wall time of the cut
+  /// Of the lowerings, those clamped to the crust bottom h = -1 because the tool reached below
+  /// it (copies counted per face and pose): the true cut is deeper there.
+  std::size_t pointsClamped = 0;
+  double seconds = 0.0;  ///< wall time of the cut
 };
 
 /// @brief Cuts every pose of @p path with the mesh of @p tool into @p ddf (h = min(h, h_tool)),

@@ -57,8 +57,11 @@ CompensationHistory startCompensation(ddf::DisplacementField target);
 
 /// @brief Heights of @p formed along the stubbles of @p target: the signed normal deviation of
 /// compareSurfaces() divided by v . n (so that a single-stage comparison gives the filled
-/// heights exactly). NaN where the formed surface was not found.
-/// @throws InvalidInput if the surfaces do not overlap. @throws Cancelled via params.progress.
+/// heights exactly). NaN where the formed surface was not found and on the faces the deformation
+/// sequence left unresolved (their deviations are not trustworthy; compensationStep() keeps the
+/// mould there).
+/// @throws InvalidInput if the surfaces do not overlap or the comparison fails
+/// (compareSurfaces()). @throws Cancelled via params.progress.
 std::vector<float> formedHeightsFromMesh(const ddf::DisplacementField& target,
                                          const ddf::TriangleMesh& formed,
                                          const ddf::DeformationSequenceParams& params = {});
@@ -101,7 +104,6 @@ std::vector<float> linearSpringback(const LinearSpringbackModel& model,
 /// @brief The isotropic model that reproduces a measured first forming: from s_0 = P + (1 -
 /// alpha)(t - P), P = t + (s_0 - t) / alpha. @throws InvalidInput for alpha outside (0, 1).
 LinearSpringbackModel calibrateSpringback(const ddf::DisplacementField& target,
-                                          std::span<const float> firstFormedHeights,
-                                          double alpha);
+                                          std::span<const float> firstFormedHeights, double alpha);
 
 }  // namespace ddfcam::planning

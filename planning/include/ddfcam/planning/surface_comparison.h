@@ -6,10 +6,13 @@
 #include <ddfcam/ddf/deformation_sequence.h>
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/triangle_mesh.h>
+#include <ddfcam/planning/coverage.h>
 #include <ddfcam/planning/error_map.h>
 #include <ddfcam/planning/scalar_field.h>
 #include <ddfcam/progress.h>
 
+#include <cstddef>
+#include <string>
 #include <vector>
 
 namespace ddfcam::planning {
@@ -42,7 +45,9 @@ struct SurfaceComparison {
   ScalarField deviation;
   /// Deviation vectors q - g per raster point copy, mm, mould frame (NaN where missing).
   std::vector<ddf::Vec3> deviationVectors;
-  /// Area-weighted statistics of deviation over the mould (band of the params).
+  /// Area-weighted statistics of deviation over the mould's resolved faces (resolvedFaces(); band
+  /// of the params): deviations on unresolved faces are not trustworthy and left out; see
+  /// comparisonCoverage() for the share of the mould the statistics describe.
   ErrorStatistics statistics;
   /// Band used for statistics and colours.
   ToleranceBand band;
@@ -52,8 +57,11 @@ struct SurfaceComparison {
 /// support = the mould mesh, repaired pseudo-normals) and compares @p deformed with it.
 /// @param mould mould (or target) surface, mm. @param deformed deformed surface in the mould's
 /// frame, mm.
-/// @throws InvalidInput for empty meshes, bad parameters, or when no raster point of the mould
-/// finds the deformed surface ("the surfaces do not overlap: ..."). @throws Cancelled.
+/// @throws InvalidInput for empty meshes, bad parameters, when no raster point of the mould
+/// finds the deformed surface ("the surfaces do not overlap: ..."), or when every deviation found
+/// lies on an unresolved face. A sequence that stalls (ddf::DeformationSequence::stalled) stops
+/// early; its unresolved faces are left out of the statistics and stallAdvice() says what to
+/// change. @throws Cancelled.
 SurfaceComparison compareSurfaces(const ddf::TriangleMesh& mould, const ddf::TriangleMesh& deformed,
                                   const ComparisonParams& params = {});
 
@@ -61,6 +69,32 @@ SurfaceComparison compareSurfaces(const ddf::TriangleMesh& mould, const ddf::Tri
 SurfaceComparison compareSurfaces(const ddf::DisplacementField& mouldDdf,
                                   const ddf::TriangleMesh& deformed,
                                   const ComparisonParams& params = {});
+
+/// @brief The faces of the comparison's mould DDF whose deviations count: all faces but the
+/// sequence's unresolved ones, ascending.
+/// @throws std::out_of_range if @p comparison has no stage.
+std::vector<int> resolvedFaces(const SurfaceComparison& comparison);
+
+/// @brief For a comparison whose deformation sequence stalled: one message naming the stages
+/// and the unresolved faces and saying what to change (alignment, swapping mould and formed, a
+/// coarser mould support); empty otherwise.
+std::string stallAdvice(const SurfaceComparison& comparison);
+
+/// @brief How much of the mould a comparison describes.
+struct ComparisonCoverage {
+  /// Area with a trusted deviation (finite, on a resolved face) over the mould's area: the area
+  /// the statistics are taken over.
+  Coverage compared;
+  double unresolvedAreaMm2 = 0.0;   ///< area with a finite deviation on unresolved faces, mm^2
+  std::size_t unresolvedFaces = 0;  ///< unresolved faces (sequence.unresolvedFaces)
+  double missingAreaMm2 = 0.0;      ///< area where the deformed surface was not found, mm^2
+};
+
+/// @brief Coverage of the mould by @p comparison (areas weighted by rasterPointAreas() of the
+/// mould surface, heights 0). An unrelated 10 x 10 mm patch over a large mould covers a small
+/// share even when all of its deviations lie in the band.
+/// @throws std::out_of_range if @p comparison has no stage.
+ComparisonCoverage comparisonCoverage(const SurfaceComparison& comparison);
 
 /// @brief Where the unique-projection property of the mould DDF fails (fig. 9.5), for display:
 /// per raster point copy (layout of the deviation) 0 where the mould DDF alone represents the
@@ -73,7 +107,7 @@ ScalarField crossingRegionField(const SurfaceComparison& comparison);
 /// @brief Re-evaluates @p comparison for another tolerance band and normal orientation without
 /// recomputing the sequence (the deformed points do not depend on either): every deviation
 /// changes sign when @p reverseSign is set, and band and statistics are recomputed for @p band
-/// over the mould's area. The result equals compareSurfaces() run with the new band and
+/// over the mould's resolved faces. The result equals compareSurfaces() run with the new band and
 /// flipNormal.
 /// @throws InvalidInput for an invalid band or a comparison without stages.
 void updateComparisonBand(SurfaceComparison& comparison, const ToleranceBand& band,

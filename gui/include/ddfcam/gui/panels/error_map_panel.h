@@ -5,6 +5,7 @@
 #pragma once
 
 #include <ddfcam/gui/workbench.h>
+#include <ddfcam/planning/coverage.h>
 #include <ddfcam/planning/error_map.h>
 #include <ddfcam/planning/scallop_prediction.h>
 
@@ -25,9 +26,12 @@ namespace ddfcam::gui {
 /// as a job and stores the result as field kDeviationField (one undo step); the view then shows
 /// it with the tolerance band (blue = material left, green = in tolerance, red = overcut).
 /// Statistics (planning::errorStatistics) and the area histogram (planning::errorHistogram, plot
-/// tab kHistogramTab) follow the band and the chosen region at once. "Plot along path" draws
-/// planning::deviationAlongPath of the selected path (plot tab kAlongPathTab). "Scallop table"
-/// runs planning::scallopTable on defaultScallopCases() as a job and fills the table.
+/// tab kHistogramTab) follow the band and the chosen region at once, with their coverage (the
+/// share of the region's area that has a deviation: raster points whose stubble misses the
+/// design mesh have none) and the points a cut left at the crust bottom (planning::
+/// crustClamping: the true overcut is deeper there, the minimum only a bound). "Plot along path"
+/// draws planning::deviationAlongPath of the selected path (plot tab kAlongPathTab). "Scallop
+/// table" runs planning::scallopTable on defaultScallopCases() as a job and fills the table.
 class ErrorMapPanel : public Panel {
   Q_OBJECT
 
@@ -52,6 +56,10 @@ class ErrorMapPanel : public Panel {
   bool computeErrorMap();
   /// @brief Statistics of the shown error map over the chosen region, if there is one.
   const std::optional<planning::ErrorStatistics>& statistics() const { return statistics_; }
+  /// @brief Share of the chosen region with a deviation, beside statistics().
+  const std::optional<planning::Coverage>& coverage() const { return coverage_; }
+  /// @brief Points of the region at the crust bottom with an overcut, beside statistics().
+  const std::optional<planning::CrustClamping>& clamping() const { return clamping_; }
   /// @brief Plots the deviation along path @p index. @return true if plotted.
   bool plotAlongPath(int index);
   /// @brief Starts the scallop-table job. @return true if started.
@@ -83,6 +91,8 @@ class ErrorMapPanel : public Panel {
   QLabel* stats_ = nullptr;
   QTableWidget* scallopTable_ = nullptr;
   std::optional<planning::ErrorStatistics> statistics_;
+  std::optional<planning::Coverage> coverage_;
+  std::optional<planning::CrustClamping> clamping_;
   std::vector<planning::ScallopRow> scallopRows_;
 };
 
