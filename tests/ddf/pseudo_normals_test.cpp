@@ -9,6 +9,7 @@
 #include <cmath>
 #include <random>
 
+#include "../support/conversion_meshes.h"
 #include "../support/test_meshes.h"
 
 namespace ddfcam::ddf {
@@ -116,15 +117,8 @@ TEST(PseudoNormals, FanWithSurroundingNormalsIsInfeasible) {
   // tetrahedron: the origin is inside their hull, so no direction is in front of all four.
   const std::vector<Vec3> n = {
       {0, 0, 1}, {0.9428, 0, -0.3333}, {-0.4714, 0.8165, -0.3333}, {-0.4714, -0.8165, -0.3333}};
-  // Face (0, i, i+1) has normal p_i x p_{i+1}: p_i must be perpendicular to both neighbours.
-  std::vector<Vec3> p(6, Vec3::Zero());
-  p[2] = n[0].cross(n[1]);
-  p[3] = n[1].cross(n[2]);
-  if (p[2].cross(p[3]).dot(n[1]) < 0) p[3] = -p[3];
-  p[4] = n[2].cross(n[3]);
-  if (p[3].cross(p[4]).dot(n[2]) < 0) p[4] = -p[4];
-  p[1] = p[2].cross(n[0]);
-  p[5] = n[3].cross(p[4]);
+  const ddf::TriangleMesh fan = test::foldedFanMesh();
+  const std::vector<Vec3>& p = fan.vertices;
   const auto mesh = makeSupportMesh(p, {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}});
   std::vector<Vec3> faceNormals;
   for (int i = 1; i <= 4; ++i) faceNormals.push_back(p[i].cross(p[i + 1]).normalized());
