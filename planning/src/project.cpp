@@ -213,7 +213,8 @@ void validateProject(const Project& project) {
 }
 
 bool projectsEqual(const Project& a, const Project& b) {
-  return a.partName == b.partName && a.sourcePath == b.sourcePath &&
+  return a.partName == b.partName && a.sourcePath == b.sourcePath && a.sourceUnit == b.sourceUnit &&
+         a.cadFaceOfSupportFace == b.cadFaceOfSupportFace && a.cadFaceNames == b.cadFaceNames &&
          sameOptional(a.part, b.part, sameDdf) &&
          sameOptional(a.designMesh, b.designMesh, sameMesh) &&
          sameEach(a.fields, b.fields, sameField) && sameEach(a.regions, b.regions, sameRegion) &&

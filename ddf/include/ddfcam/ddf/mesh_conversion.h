@@ -5,14 +5,23 @@
 #include <ddfcam/ddf/conversion_report.h>
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/pseudo_normals.h>
+#include <ddfcam/ddf/stock_crust.h>
+#include <ddfcam/ddf/support_reduction.h>
 #include <ddfcam/ddf/triangle_mesh.h>
 #include <ddfcam/ddf/validation.h>
 #include <ddfcam/ddf/vector_lengths.h>
 #include <ddfcam/progress.h>
 
+#include <optional>
 #include <vector>
 
 namespace ddfcam::ddf {
+
+/// @brief Which support the converted DDF gets.
+enum class SupportChoice {
+  Input,   ///< the welded input mesh itself (the baseline of ch. 6)
+  Reduced  ///< the input reduced by constrained edge contraction (sec. 6.1-6.2)
+};
 
 /// @brief Parameters of the mesh to DDF conversion.
 struct ConversionParams {
@@ -41,8 +50,38 @@ struct ConversionParams {
   /// The check of the result (and the coincidence tolerance of the weld). Default:
   /// ValidationParams defaults, the check `ddfcam-cli info` runs.
   ValidationParams validation;
+  /// The support: the input mesh, or the input reduced by edge contraction. The library's
+  /// default keeps the input mesh; the import dialog and `ddfcam-cli convert` default to
+  /// Reduced. Default Input.
+  SupportChoice support = SupportChoice::Input;
+  /// Constraints of the reduction (support == Reduced); its resolution and progress are set
+  /// by the conversion. Default: SupportReductionParams defaults.
+  SupportReductionParams reduction;
+  /// Accuracy, mm: when > 0 the raster resolution is chosen (resolution is the first try)
+  /// so that the represented surface lies within this distance of the input, measured both
+  /// ways on sample points. Default 0 (resolution as given).
+  double toleranceMm = 0.0;
+  /// Target raster spacing, mm: when > 0 and toleranceMm is 0, the resolution is chosen so that
+  /// the raster spacing on the longest support edge is at most this. Default 0.
+  double rasterSpacingMm = 0.0;
+  /// Stock allowance the crust must reach above the surface, mm (0 = none): support offsets
+  /// and vector lengths are fitted by fitCrustToStock. Default 0.
+  double stockMm = 0.0;
+  /// Empty, or one label per input triangle (e.g. its CAD face): a reduced support never
+  /// merges triangles of different labels, and the result says each support face's label.
+  /// Default empty.
+  std::vector<int> inputLabels;
   /// Progress in [0, 1] and cancellation (throws Cancelled). Default none.
   ProgressCallback progress;
+};
+
+/// @brief How well the represented surface follows the input (measured on sample points).
+struct ConversionAccuracy {
+  bool measured = false;         ///< the distances below were measured
+  double inputToDdfMm = 0.0;     ///< largest distance of an input sample to the DDF surface
+  double ddfToInputMm = 0.0;     ///< largest distance of a DDF raster point to the input
+  double rasterSpacingMm = 0.0;  ///< longest raster spacing (longest support edge / (m - 1))
+  int resolutionTries = 0;       ///< resolutions tried to meet toleranceMm
 };
 
 /// @brief The converted DDF and what the conversion had to give up.
@@ -56,6 +95,10 @@ struct ConversionResult {
   VectorLengthReport lengths;           ///< report of the vector length choice
   std::size_t filledPoints = 0;         ///< stored heights set from the input mesh by fill
   std::size_t unfilledPoints = 0;       ///< stored heights whose stubble missed it (kept at 0)
+  std::vector<int> supportLabels;       ///< per DDF face, its input label (empty without labels)
+  SupportReductionReport reduction;     ///< what the reduction did (support == Reduced)
+  ConversionAccuracy accuracy;          ///< distances to the input (toleranceMm or spacing set)
+  std::optional<StockFit> stock;        ///< the crust fit to stockMm (when stockMm > 0)
 };
 
 /// @brief Converts @p mesh into a DDF whose support is the mesh itself (the baseline of ch. 6).

@@ -4,9 +4,14 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/mesh_conversion.h>
+#include <ddfcam/length_unit.h>
 #include <ddfcam/progress.h>
 
+#include <array>
 #include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace ddfcam::io {
 
@@ -16,6 +21,10 @@ struct LoadPartParams {
   /// ignored for .ddf files. Its progress callback is replaced by @ref progress.
   /// Default: ddf::ConversionParams defaults (m = 10).
   ddf::ConversionParams conversion;
+  /// Unit of the file's coordinates. std::nullopt: the unit a CAD file states, millimetres for
+  /// mesh files. A given unit overrides a CAD file's own. Ignored for .ddf files (always mm).
+  /// Default std::nullopt.
+  std::optional<LengthUnit> unit;
   /// Progress in [0, 1] and cancellation for the whole load. Default none.
   ProgressCallback progress;
 };
@@ -29,6 +38,22 @@ struct LoadPartReport {
   /// DDF constraints (conversion.valid()); default-constructed for .ddf files. Describe it with
   /// ddf::conversionVerdict, conversionRepairLines and conversionProblemLines.
   ddf::ConversionReport conversion;
+  /// The full conversion result's extras: support labels, reduction, accuracy, stock fit.
+  ddf::ConversionAccuracy accuracy;
+  ddf::SupportReductionReport reduction;     ///< what the support reduction did
+  std::optional<ddf::StockFit> stock;        ///< the crust fit to the requested stock
+  LengthUnit unit = LengthUnit::Millimetre;  ///< unit the file was read in
+  bool unitFromFile = false;                 ///< the unit is the one the file states (STEP, IGES)
+  /// Bounding box of the part as read, in file units, and its diagonal: when
+  /// sizeSuggestsOtherUnit(fileDiagonal) holds and no unit was given, a caller warns or asks.
+  double fileDiagonal = 0.0;
+  std::array<ddf::Vec3, 2> boundsMm = {ddf::Vec3::Zero(), ddf::Vec3::Zero()};  ///< bounding box, mm
+  /// CAD input only: per support face its CAD face index (empty otherwise), and per CAD face a
+  /// display name such as "face 12 (B-spline)".
+  std::vector<int> cadFaceOfSupportFace;
+  std::vector<std::string> cadFaceNames;
+  /// CAD input only: what healing (ShapeFix) changed, one fact per line.
+  std::vector<std::string> cadHealing;
 };
 
 /// @brief Loads @p path as a DDF: a .ddf file through readDdf, a .stl/.obj/.ply/.off mesh

@@ -4,6 +4,7 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/triangle_mesh.h>
+#include <ddfcam/length_unit.h>
 #include <ddfcam/planning/mould_study.h>
 #include <ddfcam/planning/region_plan.h>
 #include <ddfcam/planning/scalar_field.h>
@@ -45,6 +46,12 @@ struct NamedSurface {
 struct Project {
   std::string partName;    ///< "demo part" or the source file name
   std::string sourcePath;  ///< file the part came from; empty for generated parts
+  /// Unit the part's file was read in (the part itself is always in mm). Default mm.
+  LengthUnit sourceUnit = LengthUnit::Millimetre;
+  /// Per support face of the part, the CAD face it came from (CAD input; empty otherwise).
+  std::vector<int> cadFaceOfSupportFace;
+  /// Display names of the CAD faces, indexed by the values of cadFaceOfSupportFace.
+  std::vector<std::string> cadFaceNames;
   std::optional<ddf::DisplacementField> part;  ///< the part with its current heights
   /// Reference (design) surface the part is compared with: the mesh it was converted from, or
   /// a triangulation of a generated part's design surface. Empty if there is none.

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+// ddfcam: support reduction by constrained edge contraction (dissertation ch. 6, sec. 6.1-6.2).
+#pragma once
+
+#include <ddfcam/ddf/support_mesh.h>
+#include <ddfcam/ddf/triangle_mesh.h>
+#include <ddfcam/progress.h>
+
+#include <span>
+#include <vector>
+
+namespace ddfcam::ddf {
+
+/// @brief Parameters of reduceSupport(). Every constraint of sec. 6.2 can be switched off, so
+/// that the unconstrained reduction of sec. 6.1 (fig. 6.13, 6.21) is available too.
+struct SupportReductionParams {
+  /// Raster resolution m the coverage constraints are checked at (points per support edge,
+  /// >= 2). Default 10.
+  int resolution = 10;
+  /// Candidate items of a modified face: the items of the modified faces and of their immediate
+  /// neighbours, kept when they intersect the new crust (fig. 6.7). false: the union of the
+  /// modified faces' items only. Default true.
+  bool neighbourCandidates = true;
+  /// Constraint (a): every input triangle is hit by at least one V-ray. Default true.
+  bool requireInputCoverage = true;
+  /// Constraint (b): every V-ray from a raster point hits the input. Default true.
+  bool requireRayCoverage = true;
+  /// Containment: every item height of the modified faces in [-1, 1]. Default true.
+  bool requireContainment = true;
+  /// Unique projection (sec. 4.3/4.4): each modified face has crust height h0 >= 1 after the
+  /// length choice, and its +-1 crust meets no crust of a non-adjacent face. Default true.
+  bool requireUniqueProjection = true;
+  /// Angle bound between the displacement vectors and the normals of the items they hit.
+  /// Default true.
+  bool requireAngleBound = true;
+  /// The angle bound, degrees. Default 45.
+  double maxAngleDeg = 45.0;
+  /// Longest support edge the reduction may create, mm (0 = no limit). Default 0.
+  double maxEdgeMm = 0.0;
+  /// Longest displacement vector, mm (0 = no limit). Default 0.
+  double maxVectorLengthMm = 0.0;
+  /// Upper bound on the sweeps over the sorted edge list. Default 200.
+  int maxSweeps = 200;
+  /// Progress in [0, 1] and cancellation (throws Cancelled). Default none.
+  ProgressCallback progress;
+};
+
+/// @brief What reduceSupport() did.
+struct SupportReductionReport {
+  int inputFaces = 0;             ///< faces of the support before reduction
+  int supportFaces = 0;           ///< faces after reduction
+  int contractions = 0;           ///< edges contracted
+  int sweeps = 0;                 ///< passes over the sorted edge list
+  int rejectedCritical = 0;       ///< contractions refused: critical edge (3-cycle, no face), fold
+  int rejectedBoundary = 0;       ///< contractions refused: boundary or label-border edge
+  int rejectedEdgeLength = 0;     ///< refused: a new edge longer than maxEdgeMm
+  int rejectedInputCoverage = 0;  ///< refused by constraint (a)
+  int rejectedRayCoverage = 0;    ///< refused by constraint (b)
+  int rejectedContainment = 0;    ///< refused: an item height outside [-1, 1]
+  int rejectedUniqueProjection = 0;  ///< refused: h0 < 1 or a non-adjacent crust conflict
+  int rejectedAngle = 0;             ///< refused by the angle bound
+  double seconds = 0.0;              ///< wall time of the reduction
+};
+
+/// @brief The reduced support with its vectors and, per face, the input label it carries.
+struct SupportReductionResult {
+  SupportMesh support;            ///< reduced support, mm, part frame
+  std::vector<Vec3> vectors;      ///< #V displacement vectors, mm per unit height
+  std::vector<int> faceLabels;    ///< per support face, the label of its items (empty if none)
+  SupportReductionReport report;  ///< counts of contractions and refusals
+};
+
+/// @brief Reduces the support @p input (a manifold mesh, usually the welded input surface
+/// F_d itself) by shortest-feasible-edge-first contraction (sec. 6.1) under the constraints of
+/// sec. 6.2 switched on in @p params; the items are the faces of @p input.
+/// @param input the input surface as support mesh, mm.
+/// @param vectors #V unit or scaled pseudo-normal directions of @p input (constraint 1 holds).
+/// @param inputLabels empty, or one label per face of @p input (e.g. its CAD face): an edge
+/// whose contraction would merge faces of different labels is not contracted, so every
+/// reduced face carries one label.
+/// @throws InvalidInput on a size mismatch or a bad parameter. @throws Cancelled through
+/// params.progress.
+SupportReductionResult reduceSupport(const SupportMesh& input, std::span<const Vec3> vectors,
+                                     std::span<const int> inputLabels = {},
+                                     const SupportReductionParams& params = {});
+
+}  // namespace ddfcam::ddf
