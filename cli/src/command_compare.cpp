@@ -13,6 +13,7 @@
 #include "json_writer.h"
 #include "mould_options.h"
 #include "run_warnings.h"
+#include "unit_options.h"
 
 #include <algorithm>
 #include <array>
@@ -29,7 +30,8 @@ namespace {
 constexpr const char* kHelp =
     "usage: ddfcam-cli compare MOULD FORMED [options]\n\n"
     "Compares the formed (deformed) surface FORMED with the mould (or target) surface MOULD\n"
-    "(.stl/.obj/.ply/.off/.vtp/.vtu, mm): builds a DDF on the mould, represents the formed\n"
+    "(.stl/.obj/.ply/.off/.vtp/.vtu, in --units): builds a DDF on the mould, represents the "
+    "formed\n"
     "surface as its heights (split into a sequence of smaller deformations where the\n"
     "unique-projection property fails, fig. 9.5) and reports the signed deviation along the\n"
     "mould normal: > 0 short of the mould (blue), < 0 beyond it (red), inside the band green.\n"
@@ -44,6 +46,8 @@ constexpr const char* kHelp =
     "                        'deviation' (mm), 'tolerance_class' (-1, 0, +1), 'deviation_vector'\n"
     "  --csv FILE            deviation vectors, one row per raster point (x,y,z,dx,dy,dz,dev)\n"
     "  --json FILE           statistics, stages, histogram and timings as JSON\n"
+    "  --units U             unit of MOULD and FORMED: mm, cm, m or in (default mm; the\n"
+    "                        outputs are in mm)\n"
     "  --resolution M        raster resolution of the mould DDF (default 4)\n"
     "  --tolerance T         tolerance band [-T, T], mm (default 0.5)\n"
     "  --band LO,HI          tolerance band [LO, HI], mm, LO <= 0 <= HI (instead of --tolerance)\n"
@@ -57,18 +61,19 @@ constexpr const char* kHelp =
     "                        note excepted)\n"
     "  -h, --help            show this help\n";
 
-constexpr std::array<OptionSpec, 12> kOptions = {{{"output", 'o', true},
-                                                  {"csv", '\0', true},
-                                                  {"json", '\0', true},
-                                                  {"resolution", '\0', true},
-                                                  {"tolerance", '\0', true},
-                                                  {"band", '\0', true},
-                                                  {"flip-normal", '\0', false},
-                                                  {"align", '\0', true},
-                                                  {"max-stages", '\0', true},
-                                                  {"reach", '\0', true},
-                                                  {"min-coverage", '\0', true},
-                                                  {"strict", '\0', false}}};
+const std::array<OptionSpec, 13> kOptions = {{kUnitsOption,
+                                              {"output", 'o', true},
+                                              {"csv", '\0', true},
+                                              {"json", '\0', true},
+                                              {"resolution", '\0', true},
+                                              {"tolerance", '\0', true},
+                                              {"band", '\0', true},
+                                              {"flip-normal", '\0', false},
+                                              {"align", '\0', true},
+                                              {"max-stages", '\0', true},
+                                              {"reach", '\0', true},
+                                              {"min-coverage", '\0', true},
+                                              {"strict", '\0', false}}};
 
 struct CompareRun {
   planning::LoadedSurface mould, formed;
@@ -271,8 +276,9 @@ int runCompare(std::span<const std::string> words) {
     throw UsageError("--align: expected none or best-fit, got " + method);
   auto start = std::chrono::steady_clock::now();
   CompareRun run;
-  run.mould = loadSurface(args.positionals()[0], "mould");
-  run.formed = loadSurface(args.positionals()[1], "formed");
+  const std::optional<ddfcam::LengthUnit> unit = unitOption(args);
+  run.mould = loadSurface(args.positionals()[0], "mould", unit);
+  run.formed = loadSurface(args.positionals()[1], "formed", unit);
   run.loadSeconds = secondsSince(start);
   std::printf("compare %s with mould %s (m = %d)\n", run.formed.name.c_str(),
               run.mould.name.c_str(), params.resolution);

@@ -11,6 +11,7 @@
 #include "console.h"
 #include "json_writer.h"
 #include "mould_options.h"
+#include "unit_options.h"
 
 #include <Eigen/Geometry>
 
@@ -29,7 +30,7 @@ namespace {
 constexpr const char* kHelp =
     "usage: ddfcam-cli compensate TARGET --formed F0 [F1 ...] [options]\n"
     "       ddfcam-cli compensate TARGET --model-alpha A --calibrate-from F0 [options]\n\n"
-    "Plans a mould that springs back onto TARGET (a surface file, mm) by displacement\n"
+    "Plans a mould that springs back onto TARGET (a surface file, in --units) by displacement\n"
     "adjustment on the heights of a DDF on TARGET: mould_{j+1} = mould_j - lambda (formed_j -\n"
     "TARGET), mould_0 = TARGET. With --formed, F0, F1, ... are the parts formed in mould_0,\n"
     "mould_1, ... (the history of forming simulations or tryouts run between iterations); the\n"
@@ -47,21 +48,24 @@ constexpr const char* kHelp =
     "  --iterations N          model steps (default 3)\n"
     "  --out-dir DIR           where mould_<j>.stl go (default: the current directory)\n"
     "  --json FILE             convergence per iteration (max, RMS) as JSON\n"
+    "  --units U               unit of TARGET and the formed parts: mm, cm, m or in (default\n"
+    "                          mm; the moulds are written in mm)\n"
     "  --resolution M          raster resolution of the target DDF (default 4)\n"
     "  --reach MM              length of the target DDF's vectors (default 5 % of the\n"
     "                          bounding-box diagonal; mould heights beyond it are reported)\n"
     "  -h, --help              show this help\n";
 
-constexpr std::array<OptionSpec, 10> kOptions = {{{"formed", '\0', true},
-                                                  {"model-alpha", '\0', true},
-                                                  {"model-axes", '\0', true},
-                                                  {"calibrate-from", '\0', true},
-                                                  {"lambda", '\0', true},
-                                                  {"iterations", '\0', true},
-                                                  {"out-dir", '\0', true},
-                                                  {"json", '\0', true},
-                                                  {"resolution", '\0', true},
-                                                  {"reach", '\0', true}}};
+const std::array<OptionSpec, 11> kOptions = {{kUnitsOption,
+                                              {"formed", '\0', true},
+                                              {"model-alpha", '\0', true},
+                                              {"model-axes", '\0', true},
+                                              {"calibrate-from", '\0', true},
+                                              {"lambda", '\0', true},
+                                              {"iterations", '\0', true},
+                                              {"out-dir", '\0', true},
+                                              {"json", '\0', true},
+                                              {"resolution", '\0', true},
+                                              {"reach", '\0', true}}};
 
 ddf::DisplacementField targetDdf(const ddf::TriangleMesh& mesh, int resolution,
                                  std::optional<double> reach) {
@@ -78,9 +82,9 @@ ddf::DisplacementField targetDdf(const ddf::TriangleMesh& mesh, int resolution,
   return target;
 }
 
-std::vector<float> heightsOf(const planning::CompensationHistory& history,
+std::vector<float> heightsOf(const Arguments& args, const planning::CompensationHistory& history,
                              const std::filesystem::path& file, const std::string& role) {
-  const planning::LoadedSurface formed = loadSurface(file, role);
+  const planning::LoadedSurface formed = loadSurface(file, role, unitOption(args));
   ddf::DeformationSequenceParams params;
   params.progress = consoleProgress("comparing " + formed.name);
   std::vector<float> heights = planning::formedHeightsFromMesh(history.target, formed.mesh, params);
@@ -103,7 +107,8 @@ void runImported(const Arguments& args, planning::CompensationHistory& history, 
   files.insert(files.end(), args.positionals().begin() + 1, args.positionals().end());
   for (std::size_t j = 0; j < files.size(); ++j) {
     const std::filesystem::path file = files[j];
-    planning::recordFormedResponse(history, heightsOf(history, file, "formed " + std::to_string(j)),
+    planning::recordFormedResponse(history,
+                                   heightsOf(args, history, file, "formed " + std::to_string(j)),
                                    file.filename().string());
     printIteration(history, j);
     planning::compensationStep(history, lambda);
@@ -116,7 +121,7 @@ planning::LinearSpringbackModel springbackModel(const Arguments& args,
   const auto calibration = args.value("calibrate-from");
   if (!calibration) throw UsageError("compensate: --model-alpha needs --calibrate-from F0");
   planning::LinearSpringbackModel model = planning::calibrateSpringback(
-      history.target, heightsOf(history, *calibration, "calibration"), alpha);
+      history.target, heightsOf(args, history, *calibration, "calibration"), alpha);
   if (const auto axes = args.value("model-axes")) {
     const std::vector<double> a = parseNumberList(*axes, 3, "model-axes");
     model.axisAlpha = Eigen::Vector3d(a[0], a[1], a[2]);
@@ -179,7 +184,8 @@ int runCompensate(std::span<const std::string> words) {
   const double lambda = args.positiveNumber("lambda").value_or(1.0);
   const int resolution = args.integer("resolution", 4, 2, 64);
   const auto start = std::chrono::steady_clock::now();
-  const planning::LoadedSurface target = loadSurface(args.positionals()[0], "target");
+  const planning::LoadedSurface target =
+      loadSurface(args.positionals()[0], "target", unitOption(args));
   planning::CompensationHistory history =
       planning::startCompensation(targetDdf(target.mesh, resolution, args.positiveNumber("reach")));
   std::printf("compensate %s (m = %d, lambda %.4g)\n", target.name.c_str(), resolution, lambda);

@@ -11,6 +11,7 @@
 #include "arguments.h"
 #include "commands.h"
 #include "console.h"
+#include "unit_options.h"
 
 #include <algorithm>
 #include <array>
@@ -31,7 +32,8 @@ namespace {
 constexpr const char* kHelp =
     "usage: ddfcam-cli curvature PART [-o OUT.vtp] [--csv OUT.csv] [--step D]\n\n"
     "Computes the principal curvatures and directions at every raster point of PART (a .ddf\n"
-    "file, or a .stl/.obj/.ply/.off mesh converted with heights 0) from the DDF's parametric\n"
+    "file, or a mesh or CAD file converted on its own support at m = 10) from the DDF's\n"
+    "parametric\n"
     "form (dissertation sec. 8.2). Signs are seen from the tool (+v side): positive where the\n"
     "surface bends away from the tool (convex), negative where it bends towards it.\n\n"
     "Writes the raster mesh as VTK XML PolyData with the point arrays k_max, k_min, mean,\n"
@@ -43,6 +45,8 @@ constexpr const char* kHelp =
     "  --csv FILE         also write per-point values as CSV (point_id, face, i, k, x, y, z,\n"
     "                     k_max, k_min, mean, gaussian, dir_max_x..z, dir_min_x..z, umbilic)\n"
     "  --step D           difference step in raster steps (default: automatic from m)\n"
+    "  --units U          unit of a mesh or CAD PART: mm, cm, m or in (default: the unit a\n"
+    "                     CAD file states, mm for meshes)\n"
     "  -h, --help         show this help\n";
 
 using Clock = std::chrono::steady_clock;
@@ -216,7 +220,7 @@ std::filesystem::path outputPath(const Arguments& args, const std::filesystem::p
 }
 
 int runCurvature(std::span<const std::string> words) {
-  static const std::array<OptionSpec, 3> kSpecs = {OptionSpec{"output", 'o', true},
+  static const std::array<OptionSpec, 4> kSpecs = {kUnitsOption, OptionSpec{"output", 'o', true},
                                                    OptionSpec{"csv", '\0', true},
                                                    OptionSpec{"step", '\0', true}};
   const Arguments args(words, kSpecs, "curvature");
@@ -227,9 +231,8 @@ int runCurvature(std::span<const std::string> words) {
   params.step = args.integer("step", 0, 1, 1 << 20);
   const Clock::time_point start = Clock::now();
   io::LoadPartParams load;
-  load.progress = consoleProgress("loading");
-  const ddf::DisplacementField field = io::loadPart(input, load);
-  endProgressLine();
+  load.unit = unitOption(args);
+  const ddf::DisplacementField field = loadPartInUnit(input, load, "loading");
   const Clock::time_point computeStart = Clock::now();
   params.progress = consoleProgress("curvature");
   CurvatureResult r{planning::computeCurvature(field, params), {}, {}};

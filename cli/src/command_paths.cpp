@@ -188,7 +188,7 @@ void printSummary(const std::filesystem::path& in, const io::ClProgram& program,
       "%s (%s): %zu points, %d paths, unit %s, bounds [%.6g, %.6g] x [%.6g, %.6g] x "
       "[%.6g, %.6g] mm -> %s (%s)\n",
       in.string().c_str(), std::string(io::pathFormatName(inFormat)).c_str(), program.points.size(),
-      program.pathCount(), std::string(io::lengthUnitName(program.sourceUnit)).c_str(), lo.x(),
+      program.pathCount(), std::string(io::unitSymbol(program.sourceUnit)).c_str(), lo.x(),
       hi.x(), lo.y(), hi.y(), lo.z(), hi.z(), out.string().c_str(),
       std::string(io::pathFormatName(outFormat)).c_str());
 }

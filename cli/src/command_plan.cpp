@@ -16,6 +16,7 @@
 #include "console.h"
 #include "plan_lines.h"
 #include "plan_tool.h"
+#include "unit_options.h"
 
 #include <algorithm>
 #include <array>
@@ -32,13 +33,16 @@ namespace {
 
 constexpr const char* kHelp =
     "usage: ddfcam-cli plan PART -o PATHS.csv [options]\n\n"
-    "Plans streamline tool paths over the whole of PART (a .ddf file, a .stl/.obj/.ply/.off mesh\n"
-    "converted with heights 0, or 'demo' for the built-in demo part): curvature, flow field,\n"
+    "Plans streamline tool paths over the whole of PART (a .ddf file, a mesh or CAD file\n"
+    "converted on its own support at m = 10, or 'demo' for the built-in demo part):\n"
+    "curvature, flow field,\n"
     "lines SPACING apart, optional smoothing and fairing, tool poses, linking; writes the linked\n"
     "program as a tool-path CSV (columns path, point, x y z mm, tool axis i j k, surface normal,\n"
     "feed mm/min, move cut|link|rapid; path = move index) and prints a summary.\n\n"
     "options:\n"
     "  -o, --output FILE        output CSV (required)\n"
+    "  --units U                unit of a mesh or CAD PART: mm, cm, m or in (default: the\n"
+    "                           unit a CAD file states, mm for meshes)\n"
     "  --field kmax|kmin|fixed  raw flow direction (default kmax)\n"
     "  --direction X,Y,Z        direction of --field fixed, part frame (default 1,0,0)\n"
     "  --no-smooth              use the raw field (default: smoothed, weight 0.02)\n"
@@ -84,6 +88,7 @@ double msSince(Clock::time_point start) {
 struct PlanOptions {
   std::filesystem::path input;
   std::filesystem::path output;
+  std::optional<ddfcam::LengthUnit> unit;  ///< --units of a mesh or CAD input
   planning::FlowFieldParams field;
   planning::StreamlineMethod method = planning::StreamlineMethod::Rk4;
   Seeding seeding = Seeding::Transverse;
@@ -192,23 +197,34 @@ void checkScallop(const PlanOptions& o) {
 }
 
 PlanOptions parseOptions(std::span<const std::string> words) {
-  static const std::array<OptionSpec, 21> kSpecs = {
-      OptionSpec{"output", 'o', true},         OptionSpec{"field", '\0', true},
-      OptionSpec{"direction", '\0', true},     OptionSpec{"no-smooth", '\0', false},
-      OptionSpec{"method", '\0', true},        OptionSpec{"seeding", '\0', true},
-      OptionSpec{"spacing", '\0', true},       OptionSpec{"smooth-window", '\0', true},
-      OptionSpec{"fair", '\0', false},         OptionSpec{"linking", '\0', true},
-      OptionSpec{"point", '\0', true},         OptionSpec{"tool", '\0', true},
-      OptionSpec{"radius", '\0', true},        OptionSpec{"feed", '\0', true},
-      OptionSpec{"decimals", '\0', true},      OptionSpec{"scallop", '\0', true},
-      OptionSpec{"corner-radius", '\0', true}, OptionSpec{"lead", '\0', true},
-      OptionSpec{"tilt", '\0', true},          OptionSpec{"tolerance", '\0', true},
-      OptionSpec{"step", '\0', true}};
+  static const std::array<OptionSpec, 22> kSpecs = {kUnitsOption,
+                                                    OptionSpec{"output", 'o', true},
+                                                    OptionSpec{"field", '\0', true},
+                                                    OptionSpec{"direction", '\0', true},
+                                                    OptionSpec{"no-smooth", '\0', false},
+                                                    OptionSpec{"method", '\0', true},
+                                                    OptionSpec{"seeding", '\0', true},
+                                                    OptionSpec{"spacing", '\0', true},
+                                                    OptionSpec{"smooth-window", '\0', true},
+                                                    OptionSpec{"fair", '\0', false},
+                                                    OptionSpec{"linking", '\0', true},
+                                                    OptionSpec{"point", '\0', true},
+                                                    OptionSpec{"tool", '\0', true},
+                                                    OptionSpec{"radius", '\0', true},
+                                                    OptionSpec{"feed", '\0', true},
+                                                    OptionSpec{"decimals", '\0', true},
+                                                    OptionSpec{"scallop", '\0', true},
+                                                    OptionSpec{"corner-radius", '\0', true},
+                                                    OptionSpec{"lead", '\0', true},
+                                                    OptionSpec{"tilt", '\0', true},
+                                                    OptionSpec{"tolerance", '\0', true},
+                                                    OptionSpec{"step", '\0', true}};
   const Arguments args(words, kSpecs, "plan");
   args.expectPositionals(1, "an input part (.ddf, mesh or 'demo')");
   PlanOptions o;
   o.input = args.positionals()[0];
   o.output = args.required("output");
+  o.unit = unitOption(args);
   parseField(args, o);
   parseLines(args, o);
   parseOutput(args, o);
@@ -216,13 +232,12 @@ PlanOptions parseOptions(std::span<const std::string> words) {
   return o;
 }
 
-ddf::DisplacementField loadInput(const std::filesystem::path& input) {
+ddf::DisplacementField loadInput(const std::filesystem::path& input,
+                                 const std::optional<ddfcam::LengthUnit>& unit) {
   if (input == "demo") return ddf::demoPart().ddf;
-  io::LoadPartParams load;
-  load.progress = consoleProgress("loading");
-  ddf::DisplacementField part = io::loadPart(input, load);
-  endProgressLine();
-  return part;
+  io::LoadPartParams params;
+  params.unit = unit;
+  return loadPartInUnit(input, params, "loading");
 }
 
 double boxDiagonal(const ddf::DisplacementField& part) {
@@ -329,7 +344,7 @@ int runPlan(std::span<const std::string> words) {
   PlanOptions o = parseOptions(words);
   StageTimes t;
   Clock::time_point start = Clock::now();
-  const ddf::DisplacementField part = loadInput(o.input);
+  const ddf::DisplacementField part = loadInput(o.input, o.unit);
   t.load = msSince(start);
   std::printf("plan on %s: %d faces, m = %d\n", o.input.string().c_str(), part.faceCount(),
               part.raster().m);

@@ -5,6 +5,7 @@
 #include <ddfcam/error.h>
 #include <ddfcam/io/ddf_file.h>
 #include <ddfcam/io/mesh_io.h>
+#include <ddfcam/io/mesh_units.h>
 #include <ddfcam/io/part_loader.h>
 #include <ddfcam/io/project_file.h>
 #include <ddfcam/io/tool_path_csv.h>
@@ -25,6 +26,7 @@
 #include "simulate_checks.h"
 #include "simulate_import.h"
 #include "simulate_inputs.h"
+#include "unit_options.h"
 
 #include <algorithm>
 #include <array>
@@ -44,7 +46,7 @@ constexpr const char* kHelp =
     "usage: ddfcam-cli simulate PART --paths FILE -o OUT.ddf [options]\n\n"
     "Grinds the cut moves of a tool-path file (a CSV as written by 'ddfcam-cli plan', APT/CLDATA,\n"
     "ROS toolpath YAML or FANUC .ls; see 'ddfcam-cli paths') into PART (a .ddf\n"
-    "file, a .stl/.obj/.ply/.off mesh converted with heights 0 as 'plan' does, a .ddfproj\n"
+    "file, a mesh or CAD file converted as 'plan' does, in --units, a .ddfproj\n"
     "project's part, or 'demo'). PART's heights are the desired surface; the workpiece is that\n"
     "surface raised by the allowance along its normal, or a stock mesh. The tool is placed at\n"
     "every contact point (x y z, or the tool reference point minus the tool's reference offset\n"
@@ -106,7 +108,9 @@ constexpr const char* kHelp =
     "  --allowance MM           stock above the desired surface along its normal (default 0:\n"
     "                           the workpiece is the desired surface, so only gouges show)\n"
     "  --stock-mesh FILE        workpiece from a stock mesh (.stl/.obj/.ply/.off) converted onto\n"
-    "                           PART's support instead of --allowance\n"
+    "                           PART's support instead of --allowance (read in --units)\n"
+    "  --units U                unit of a mesh or CAD PART and of the stock mesh: mm, cm, m\n"
+    "                           or in (default: the unit a CAD file states, mm for meshes)\n"
     "  --swept                  cut the swept volume between consecutive poses (convex tools)\n"
     "  --correct                lift every pose off the desired surface until it no longer\n"
     "                           penetrates it (tangential DDF, sec. 8.4.2) before cutting\n"
@@ -129,18 +133,17 @@ double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-ddf::DisplacementField loadInput(const std::filesystem::path& input) {
+ddf::DisplacementField loadInput(const std::filesystem::path& input,
+                                 const std::optional<ddfcam::LengthUnit>& unit) {
   if (input == "demo") return ddf::demoPart().ddf;
   if (input.extension() == ".ddfproj") {
     planning::Project project = io::readProject(input);
     if (!project.part) throw InvalidInput("simulate: project " + input.string() + " has no part");
     return std::move(*project.part);
   }
-  io::LoadPartParams load;
-  load.progress = consoleProgress("loading");
-  ddf::DisplacementField part = io::loadPart(input, load);
-  endProgressLine();
-  return part;
+  io::LoadPartParams params;
+  params.unit = unit;
+  return loadPartInUnit(input, params, "loading");
 }
 
 struct SimulationResult {
@@ -315,8 +318,10 @@ ddf::DisplacementField makeWorkpiece(const SimulateOptions& o, const ddf::Displa
   if (!o.stockMesh) return planning::workpieceWithAllowance(goal, o.allowanceMm);
   planning::StockWorkpieceParams params;
   params.fill.progress = consoleProgress("stock");
-  planning::StockWorkpiece stock =
-      planning::workpieceFromStockMesh(goal, io::readMesh(*o.stockMesh), params);
+  const ddf::TriangleMesh mesh = io::readMesh(*o.stockMesh);
+  warnIfOtherUnit(*o.stockMesh, io::boundingBoxDiagonal(mesh), o.unit);
+  planning::StockWorkpiece stock = planning::workpieceFromStockMesh(
+      goal, io::scaledToMm(mesh, o.unit.value_or(ddfcam::LengthUnit::Millimetre)), params);
   endProgressLine();
   return std::move(stock.workpiece);
 }
@@ -365,7 +370,7 @@ int runSimulate(std::span<const std::string> words) {
   const Clock::time_point begin = Clock::now();
   const SimulateOptions o = parseSimulateOptions(words);
   SimulationResult r;
-  const ddf::DisplacementField goal = loadInput(o.input);
+  const ddf::DisplacementField goal = loadInput(o.input, o.unit);
   CsvPath path = importSimulationPath(goal, o);
   r.import = path.facts;
   r.passes = static_cast<int>(path.path.passStarts.size());

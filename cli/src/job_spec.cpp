@@ -34,9 +34,20 @@ void parsePart(JsonFields& job, PartSpec& part, const Dirs& dirs) {
   const std::optional<std::filesystem::path> file = f.path("file", dirs.in);
   part.demo = !file || file->filename() == "demo";
   if (!part.demo) part.file = *file;
-  part.conversion.resolution = f.integer("resolution", part.conversion.resolution, 2, 200);
-  part.conversion.weldToleranceMm =
-      f.number("weldToleranceMm", part.conversion.weldToleranceMm, 0.0);
+  ddf::ConversionParams& c = part.conversion;
+  c.resolution = f.integer("resolution", c.resolution, 2, 200);
+  c.weldToleranceMm = f.number("weldToleranceMm", c.weldToleranceMm, 0.0);
+  if (const json* units = f.find("units")) {
+    part.unit = units->is_string() ? parseLengthUnit(units->get<std::string>()) : std::nullopt;
+    if (!part.unit) f.fail("units", "expected " + std::string(lengthUnitChoices()));
+  }
+  c.support = f.choice("support", {"input", "reduced"}, 0) == 1 ? ddf::SupportChoice::Reduced
+                                                                : ddf::SupportChoice::Input;
+  c.toleranceMm = f.number("toleranceMm", 0.0, 0.0);
+  c.rasterSpacingMm = f.number("rasterSpacingMm", 0.0, 0.0);
+  if (c.toleranceMm > 0.0 && c.rasterSpacingMm > 0.0)
+    f.fail("rasterSpacingMm", "give toleranceMm or rasterSpacingMm, not both");
+  c.stockMm = f.number("stockMm", 0.0, 0.0);
   f.finish();
 }
 

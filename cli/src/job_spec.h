@@ -3,6 +3,7 @@
 #pragma once
 
 #include <ddfcam/ddf/mesh_conversion.h>
+#include <ddfcam/length_unit.h>
 #include <ddfcam/planning/error_map.h>
 #include <ddfcam/planning/grinding_simulation.h>
 #include <ddfcam/planning/region_plan.h>
@@ -19,11 +20,13 @@
 
 namespace ddfcam::cli {
 
-/// @brief The part to plan on: the built-in demo part or a file (.ddf, mesh, .ddfproj).
+/// @brief The part to plan on: the built-in demo part or a file (.ddf, mesh, CAD, .ddfproj).
 struct PartSpec {
   bool demo = true;                  ///< the built-in demo part (job "part": "demo") (default true)
   std::filesystem::path file;        ///< part file, absolute (resolved against the job's directory)
-  ddf::ConversionParams conversion;  ///< mesh conversion, as the Part panel (default m = 10)
+  ddf::ConversionParams conversion;  ///< mesh and CAD conversion (default m = 10, support input)
+  /// Unit of a mesh or CAD file ("units"); std::nullopt: a CAD file's own, mm for meshes.
+  std::optional<ddfcam::LengthUnit> unit;
 };
 
 /// @brief How the part is divided into regions (Segmentation panel).

@@ -131,6 +131,7 @@ planning::Project loadJobProject(const JobSpec& spec) {
   } else {
     io::LoadPartParams params;
     params.conversion = spec.part.conversion;
+    params.unit = spec.part.unit;
     project = io::openProject(spec.part.file, params);
     if (!project.part) throw InvalidInput(spec.part.file.string() + " holds no part");
   }

@@ -3,9 +3,11 @@
 #include "mould_options.h"
 
 #include <ddfcam/error.h>
+#include <ddfcam/io/mesh_units.h>
 #include <ddfcam/io/surface_file.h>
 
 #include "arguments.h"
+#include "unit_options.h"
 
 #include <charconv>
 #include <cmath>
@@ -34,8 +36,12 @@ std::vector<double> parseNumberList(const std::string& text, std::size_t count,
   return values;
 }
 
-planning::LoadedSurface loadSurface(const std::filesystem::path& path, const std::string& role) {
+planning::LoadedSurface loadSurface(const std::filesystem::path& path, const std::string& role,
+                                    const std::optional<ddfcam::LengthUnit>& unit) {
   planning::LoadedSurface surface = io::readSurfaceFile(path);
+  warnIfOtherUnit(path, io::boundingBoxDiagonal(surface.mesh), unit);
+  surface.mesh =
+      io::scaledToMm(std::move(surface.mesh), unit.value_or(ddfcam::LengthUnit::Millimetre));
   std::fprintf(stderr, "%s: %s, %zu vertices, %zu triangles, %zu fields\n", role.c_str(),
                path.string().c_str(), surface.mesh.vertices.size(), surface.mesh.triangles.size(),
                surface.fields.size());

@@ -3,10 +3,12 @@
 // text output).
 #pragma once
 
+#include <ddfcam/length_unit.h>
 #include <ddfcam/planning/mould_study.h>
 
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,10 +19,12 @@ namespace ddfcam::cli {
 std::vector<double> parseNumberList(const std::string& text, std::size_t count,
                                     const std::string& option);
 
-/// @brief Reads a surface file (io::readSurfaceFile: STL/OBJ/PLY/OFF/VTP/VTU) and prints its
-/// size on stderr, labelled @p role ("mould", "formed").
+/// @brief Reads a surface file (io::readSurfaceFile: STL/OBJ/PLY/OFF/VTP/VTU) in @p unit (mm
+/// when not given), scaled to mm, and prints its size on stderr, labelled @p role ("mould",
+/// "formed"); without a unit it warns when the size suggests another one (warnIfOtherUnit).
 /// @throws IoError as readSurfaceFile.
-planning::LoadedSurface loadSurface(const std::filesystem::path& path, const std::string& role);
+planning::LoadedSurface loadSurface(const std::filesystem::path& path, const std::string& role,
+                                    const std::optional<ddfcam::LengthUnit>& unit);
 
 /// @brief Writes @p text to @p file (replacing it).
 /// @throws IoError naming @p command and the file if it cannot be written.

@@ -163,7 +163,7 @@ CsvPath importSimulationPath(const ddf::DisplacementField& goal, const SimulateO
   printPathWarnings(o.paths, warnings);
   ImportFacts& f = out.facts;
   f.format = io::pathFormatName(format);
-  f.unit = io::lengthUnitName(o.import.unit.value_or(program.sourceUnit));
+  f.unit = io::unitSymbol(o.import.unit.value_or(program.sourceUnit));
   f.pointsRead = static_cast<int>(program.points.size());
   f.posesPlaced = static_cast<int>(out.path.poses.size());
   f.warnings = static_cast<int>(program.warnings.size() + warnings.size());

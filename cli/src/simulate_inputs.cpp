@@ -17,6 +17,7 @@
 
 #include "arguments.h"
 #include "run_warnings.h"
+#include "unit_options.h"
 
 namespace ddfcam::cli {
 namespace {
@@ -104,7 +105,8 @@ planning::Tool toolFromOptions(const Arguments& args, const std::string& kindNam
   return tool;
 }
 
-const std::array<OptionSpec, 36> kSpecs = {OptionSpec{"paths", '\0', true},
+const std::array<OptionSpec, 37> kSpecs = {kUnitsOption,
+                                           OptionSpec{"paths", '\0', true},
                                            OptionSpec{"path-units", '\0', true},
                                            OptionSpec{"translate", '\0', true},
                                            OptionSpec{"rotate", '\0', true},
@@ -232,6 +234,7 @@ SimulateOptions parseSimulateOptions(std::span<const std::string> words) {
   if (args.has("stock-mesh") && args.has("allowance"))
     throw UsageError("--stock-mesh and --allowance exclude each other");
   if (const auto v = args.value("stock-mesh")) o.stockMesh = *v;
+  o.unit = unitOption(args);
   o.allowanceMm = number(args, "allowance", 0.0);
   if (args.has("tool-name") && !args.has("tool-file"))
     throw UsageError("--tool-name needs --tool-file FILE");

@@ -6,6 +6,7 @@
 #include <ddfcam/io/cl_program.h>
 #include <ddfcam/io/imported_path.h>
 #include <ddfcam/io/tool_path_csv.h>
+#include <ddfcam/length_unit.h>
 #include <ddfcam/planning/coverage.h>
 #include <ddfcam/planning/path_sampling.h>
 #include <ddfcam/planning/tool.h>
@@ -61,19 +62,20 @@ struct SimulateOptions {
   std::optional<std::filesystem::path> errorMap;   ///< --error-map (default none)
   std::optional<std::filesystem::path> report;     ///< --report (default none)
   std::optional<std::filesystem::path> stockMesh;  ///< --stock-mesh (default none)
-  planning::Tool tool;                             ///< the tool (default roll R5 W10)
-  std::string toolKind = "roll";                   ///< kind as named on the command line
-  std::string toolSource = "command line";         ///< "command line" or the library file
-  planning::PlacementParams placement;             ///< --lead, --tilt (default 0, 0)
-  double allowanceMm = 0.0;                        ///< --allowance, mm (default 0)
-  double toleranceMm = 0.01;                       ///< --tolerance, mm (default 0.01)
-  bool checkVConvexity = true;                     ///< not --no-vconvexity-check
-  std::optional<double> sampleToleranceMm;         ///< --sample-tolerance, mm (default none)
-  std::optional<double> stepMm;                    ///< --step, mm (default none)
-  bool swept = false;                              ///< --swept (default false)
-  CorrectionOptions correction;                    ///< --correct ...
-  PrestonOptions preston;                          ///< --preston ...
-  ImportOptions import;                            ///< --path-units, --translate, ...
+  std::optional<ddfcam::LengthUnit> unit;   ///< --units of PART and the stock mesh (default none)
+  planning::Tool tool;                      ///< the tool (default roll R5 W10)
+  std::string toolKind = "roll";            ///< kind as named on the command line
+  std::string toolSource = "command line";  ///< "command line" or the library file
+  planning::PlacementParams placement;      ///< --lead, --tilt (default 0, 0)
+  double allowanceMm = 0.0;                 ///< --allowance, mm (default 0)
+  double toleranceMm = 0.01;                ///< --tolerance, mm (default 0.01)
+  bool checkVConvexity = true;              ///< not --no-vconvexity-check
+  std::optional<double> sampleToleranceMm;  ///< --sample-tolerance, mm (default none)
+  std::optional<double> stepMm;             ///< --step, mm (default none)
+  bool swept = false;                       ///< --swept (default false)
+  CorrectionOptions correction;             ///< --correct ...
+  PrestonOptions preston;                   ///< --preston ...
+  ImportOptions import;                     ///< --path-units, --translate, ...
   /// --min-coverage: warn when the tool touches less of the part, % (default 5).
   double minCoveragePercent = planning::kLowPathCoveragePercent;
   bool strict = false;  ///< --strict: exit code 3 when the run had any warning (default false)

@@ -46,7 +46,7 @@ void chooseShorterLengths(ConversionResult& result, const ConversionParams& para
   VectorLengthParams lengths = lengthParams(params);
   lengths.maxLengthMm = 0.5 * longest;
   lengths.maxIterations = 2 * params.lengths.maxIterations;
-  if (params.progress) lengths.progress = [&](double) { return params.progress(0.9); };
+  if (params.progress) lengths.progress = [&](double) { return params.progress(0.6); };
   result.lengths = chooseVectorLengths(result.ddf, lengths);
   ++result.report.lengthRetries;
 }

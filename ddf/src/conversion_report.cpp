@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 
 namespace ddfcam::ddf {
@@ -50,7 +51,56 @@ std::string consequence(int c) {
   }
 }
 
+std::string number(double x, const char* unit) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.4g%s", x, unit);
+  return text;
+}
+
+std::string reductionLine(const SupportReductionReport& r) {
+  return "support reduced from " + plural(r.inputFaces, "face", "faces") + " to " +
+         std::to_string(r.supportFaces) + " in " + number(r.seconds, " s") + " (" +
+         plural(r.contractions, "edge contraction", "edge contractions") + ", " +
+         plural(r.sweeps, "sweep", "sweeps") + ")";
+}
+
+std::string accuracyLine(const ConversionAccuracy& a) {
+  std::string text =
+      "distance to the input, measured on sample points at m = " + std::to_string(a.resolution) +
+      ": input -> DDF " + number(a.inputToDdfMm, " mm") + ", DDF -> input " +
+      number(a.ddfToInputMm, " mm");
+  if (a.toleranceMm > 0.0)
+    text += a.toleranceMet ? " (within the tolerance " + number(a.toleranceMm, " mm") + ", " +
+                                 plural(a.resolutionTries, "resolution", "resolutions") + " tried)"
+                           : " (NOT within the tolerance " + number(a.toleranceMm, " mm") + ")";
+  return text;
+}
+
+std::string stockLine(const StockFit& s) {
+  if (s.holds)
+    return "stock allowance " + number(s.requestedMm, " mm") +
+           ": the crust holds it (smallest reach above the surface " +
+           number(s.reach.minAboveMm, " mm") + ")";
+  std::string text = "stock allowance " + number(s.requestedMm, " mm") +
+                     " NOT held by the crust (smallest reach above the surface " +
+                     number(s.reach.minAboveMm, " mm") + ")";
+  if (s.limit) text += ": " + s.limit->message;
+  return text;
+}
+
 }  // namespace
+
+std::vector<std::string> conversionSummaryLines(const ConversionReport& r) {
+  std::vector<std::string> lines;
+  if (r.reducedSupport) lines.push_back(reductionLine(r.reduction));
+  if (r.resolution >= 2)
+    lines.push_back("raster resolution m = " + std::to_string(r.resolution) + ", raster spacing " +
+                    number(r.rasterSpacingMm, " mm") + " on the longest support edge");
+  if (r.accuracy.measured) lines.push_back(accuracyLine(r.accuracy));
+  if (!r.accuracy.note.empty()) lines.push_back(r.accuracy.note);
+  if (r.stock) lines.push_back(stockLine(*r.stock));
+  return lines;
+}
 
 std::vector<ConstraintFailure> constraintFailures(const ValidationReport& report) {
   std::vector<ConstraintFailure> out;

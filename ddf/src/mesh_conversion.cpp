@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // ddfcam: mesh -> DDF baseline conversion (weld, manifold support, pseudo-normals, lengths).
+#include "conversion_accuracy.h"
 #include "conversion_repair.h"
+#include "conversion_resolution.h"
 
-#include <ddfcam/ddf/crust_hash.h>
-#include <ddfcam/ddf/depth_buffer.h>
 #include <ddfcam/ddf/mesh_conversion.h>
 #include <ddfcam/error.h>
 #include <ddfcam/log.h>
@@ -77,10 +77,24 @@ std::vector<char> manifoldAcceptance(const std::vector<Vec3>& points,
   return accepted;
 }
 
+/// A non-negative finite length parameter, or InvalidInput naming it.
+void checkLength(double value, const char* name) {
+  if (!(value >= 0.0) || !std::isfinite(value))
+    throw InvalidInput(std::string("mesh conversion: ") + name + " must be >= 0 mm, got " +
+                       std::to_string(value));
+}
+
 void checkInput(const TriangleMesh& mesh, const ConversionParams& params) {
   if (params.resolution < 2)
     throw InvalidInput("mesh conversion: resolution must be >= 2, got " +
                        std::to_string(params.resolution));
+  checkLength(params.toleranceMm, "the tolerance");
+  checkLength(params.rasterSpacingMm, "the raster spacing");
+  checkLength(params.stockMm, "the stock allowance");
+  if (!params.inputLabels.empty() && params.inputLabels.size() != mesh.triangles.size())
+    throw InvalidInput("mesh conversion: " + std::to_string(params.inputLabels.size()) +
+                       " input labels for " + std::to_string(mesh.triangles.size()) +
+                       " triangles (one label per triangle, or none)");
   const int n = static_cast<int>(mesh.vertices.size());
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
     for (int v : mesh.triangles[f])
@@ -180,25 +194,15 @@ SupportMesh buildSupport(const TriangleMesh& mesh, const ConversionParams& param
   return makeSupportMesh(points, triangles);
 }
 
-// Heights from the input mesh along the stubbles (the depth buffer's fill mode): the support is
-// the mesh, so heights come out ~0, but the input's dropped triangles and any later change of
-// support are honoured the same way. Stubbles that miss keep h = 0, i.e. the support itself.
-void fillFromInput(const TriangleMesh& mesh, const ConversionParams& params,
-                   ConversionResult& result) {
-  const CrustHash hash(result.ddf);
-  FillParams fill;
-  if (params.progress) fill.progress = [&](double x) { return params.progress(0.9 + 0.1 * x); };
-  const FillReport report = fillFromMesh(result.ddf, hash, mesh, fill);
-  result.filledPoints = report.filled;
-  result.unfilledPoints = report.missing;
-  result.report.unfilledPoints = report.missing;
-}
-
-/// Vector lengths (sec. 4.4), then the check of the constraints and its repairs.
+/// Vector lengths (sec. 4.4), then the check of the constraints and its repairs. A reduced
+/// support keeps the reduction's vectors: each contraction chose them (h0 >= 1) and checked
+/// with them that every stubble hits the input, which a fresh choice of lengths could undo.
 void chooseLengthsAndCheck(const ConversionParams& params, ConversionResult& result) {
-  VectorLengthParams lengths = detail::lengthParams(params);
-  if (params.progress) lengths.progress = [&](double x) { return params.progress(0.2 + 0.7 * x); };
-  result.lengths = chooseVectorLengths(result.ddf, lengths);
+  if (params.support != SupportChoice::Reduced) {
+    VectorLengthParams lengths = detail::lengthParams(params);
+    lengths.progress = detail::progressShare(params.progress, 0.4, 0.6);
+    result.lengths = chooseVectorLengths(result.ddf, lengths);
+  }
   if (params.validateResult) detail::validateAndRepair(result, params);
   ConversionReport& report = result.report;
   report.shortenedVectors = result.lengths.shortenedVertices;
@@ -206,16 +210,52 @@ void chooseLengthsAndCheck(const ConversionParams& params, ConversionResult& res
     log(LogLevel::Warning, "mesh conversion: " + conversionVerdict(report));
 }
 
-}  // namespace
+/// Per support face, the label of its input triangle (empty without labels).
+std::vector<int> supportFaceLabels(const ConversionParams& params,
+                                   const std::vector<int>& sourceTriangle) {
+  std::vector<int> labels;
+  if (params.inputLabels.empty()) return labels;
+  labels.reserve(sourceTriangle.size());
+  for (int t : sourceTriangle) labels.push_back(params.inputLabels[t]);
+  return labels;
+}
 
-ConversionResult convertMeshToDdf(const TriangleMesh& mesh, const ConversionParams& params) {
-  checkInput(mesh, params);
-  ConversionResult result;
-  result.report.inputVertices = static_cast<int>(mesh.vertices.size());
-  result.report.inputTriangles = static_cast<int>(mesh.triangles.size());
-  reportProgress(params.progress, 0.0);
-  SupportMesh support = buildSupport(mesh, params, result);
-  reportProgress(params.progress, 0.1);
+/// The support, vectors and labels the DDF is built from: as given, or reduced (sec. 6.1-6.2).
+struct SupportParts {
+  SupportMesh support;
+  std::vector<Vec3> vectors;
+  std::vector<int> labels;
+};
+
+void reduce(SupportParts& parts, const ConversionParams& params, ConversionResult& result) {
+  SupportReductionParams reduction = params.reduction;
+  reduction.resolution = params.resolution;
+  reduction.progress = detail::progressShare(params.progress, 0.1, 0.4);
+  SupportReductionResult reduced =
+      reduceSupport(parts.support, parts.vectors, parts.labels, reduction);
+  parts.support = std::move(reduced.support);
+  parts.vectors = std::move(reduced.vectors);
+  if (!parts.labels.empty()) parts.labels = std::move(reduced.faceLabels);
+  result.reduction = reduced.report;
+  result.report.reducedSupport = true;
+  result.report.reduction = reduced.report;
+  // Those name faces and vertices of the unreduced support; the report keeps their counts.
+  result.sourceTriangle.clear();
+  result.repairedVertices.clear();
+  result.infeasibleVertices.clear();
+}
+
+/// The first raster resolution: the spacing rule's when a spacing is set, else as given.
+int firstResolution(const SupportMesh& support, const ConversionParams& params) {
+  if (!(params.rasterSpacingMm > 0.0)) return params.resolution;
+  return detail::resolutionForSpacing(detail::longestSupportEdgeMm(support),
+                                      static_cast<int>(support.n_faces()), params.rasterSpacingMm,
+                                      params.maxRasterPoints);
+}
+
+/// Pseudo-normal directions of @p support, repaired for constraint 1, with their counts.
+std::vector<Vec3> supportDirections(const SupportMesh& support, const ConversionParams& params,
+                                    ConversionResult& result) {
   auto normals = pseudoNormals(support, params.normals);
   result.repairedVertices = std::move(normals.repairedVertices);
   result.infeasibleVertices = std::move(normals.infeasibleVertices);
@@ -225,20 +265,171 @@ ConversionResult convertMeshToDdf(const TriangleMesh& mesh, const ConversionPara
     log(LogLevel::Warning, "mesh conversion: " + std::to_string(result.infeasibleVertices.size()) +
                                " vertices have no front-facing direction (first: vertex " +
                                std::to_string(result.infeasibleVertices.front()) + ")");
-  result.report.boundaryLoops = detail::countBoundaryLoops(support);
-  result.ddf =
-      DisplacementField(std::move(support), std::move(normals.normals), params.resolution, 0.0f);
+  return std::move(normals.normals);
+}
+
+/// The copies of the result's summary its report carries for callers that only get the report.
+void copySummary(ConversionResult& result) {
+  result.report.resolution = result.ddf.resolution();
+  result.report.rasterSpacingMm =
+      detail::longestSupportEdgeMm(result.ddf.support()) / (result.ddf.resolution() - 1);
+  result.report.accuracy = result.accuracy;
+  result.report.stock = result.stock;
+}
+
+/// One conversion; @p raise lets the tolerance raise m on the final support (see fillHeights).
+ConversionResult convertOnce(const TriangleMesh& mesh, const ConversionParams& params, bool raise) {
+  checkInput(mesh, params);
+  ConversionResult result;
+  result.report.inputVertices = static_cast<int>(mesh.vertices.size());
+  result.report.inputTriangles = static_cast<int>(mesh.triangles.size());
+  reportProgress(params.progress, 0.0);
+  SupportParts parts;
+  parts.support = buildSupport(mesh, params, result);
+  reportProgress(params.progress, 0.1);
+  parts.vectors = supportDirections(parts.support, params, result);
+  result.report.boundaryLoops = detail::countBoundaryLoops(parts.support);
+  parts.labels = supportFaceLabels(params, result.sourceTriangle);
+  const std::vector<int> keptTriangles = result.sourceTriangle;
+  if (params.support == SupportChoice::Reduced) reduce(parts, params, result);
+  result.supportLabels = parts.labels;
+  const int m = firstResolution(parts.support, params);
+  result.ddf = DisplacementField(std::move(parts.support), std::move(parts.vectors), m, 0.0f);
   result.report.supportVertices = result.ddf.vertexCount();
   result.report.supportFaces = result.ddf.faceCount();
-  reportProgress(params.progress, 0.2);
-  if (!params.chooseLengths) {
-    reportProgress(params.progress, 1.0);
-    return result;
+  reportProgress(params.progress, 0.4);
+  if (params.chooseLengths) {
+    chooseLengthsAndCheck(params, result);
+    detail::fillHeights(mesh, params, keptTriangles, result, raise);
   }
-  chooseLengthsAndCheck(params, result);
-  fillFromInput(mesh, params, result);
+  copySummary(result);
   reportProgress(params.progress, 1.0);
   return result;
+}
+
+// Reductions tried for a tolerance, each with a smaller target raster spacing.
+constexpr int kReductionTries = 4;
+// Largest m the reduction runs at for a tolerance (then the edge bound shrinks instead).
+constexpr int kMaxReducedResolution = 32;
+
+/// Median edge length of the input triangles, mm: the input's own sampling of its surface, the
+/// first target raster spacing of a reduced support for a tolerance.
+double medianEdgeMm(const TriangleMesh& mesh) {
+  std::vector<double> lengths;
+  lengths.reserve(3 * mesh.triangles.size());
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const double l = (mesh.vertices[t[(k + 1) % 3]] - mesh.vertices[t[k]]).norm();
+      if (l > 0.0 && std::isfinite(l)) lengths.push_back(l);
+    }
+  if (lengths.empty()) return 0.0;
+  const auto mid = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
+  std::nth_element(lengths.begin(), mid, lengths.end());
+  return *mid;
+}
+
+double worstMm(const ConversionResult& r) {
+  return std::max(r.accuracy.inputToDdfMm, r.accuracy.ddfToInputMm);
+}
+
+/// The factor the raster spacing must shrink by: the chord error falls with the square of the
+/// spacing, so by the root of the measured ratio (with a margin), at least by half.
+double spacingFactor(double worst, double tol) {
+  return std::clamp(0.9 * std::sqrt(tol / worst), 0.25, 0.5);
+}
+
+/// What keeps the best of the reduced tries from the tolerance, for accuracy.note.
+std::string reducedLimit(const ConversionResult& best, const std::string& stop, double prevWorst,
+                         int tries) {
+  std::string why = std::to_string(tries) + " reduced supports tried; " + stop;
+  if (best.unfilledPoints > 0)
+    return why + "; " + std::to_string(best.unfilledPoints) +
+           " stubbles miss the input and keep the support's position";
+  if (prevWorst > 0.0 && worstMm(best) > 0.5 * prevWorst)
+    return why + "; the distance falls no faster than the spacing (" + detail::mm(prevWorst) +
+           " -> " + detail::mm(worstMm(best)) +
+           "): a crease or sharp edge inside a support face, which the raster cuts at any spacing";
+  return why;
+}
+
+/// The next try's m and edge bound after a miss; false (with @p stop saying why) at a limit.
+bool nextTry(const ConversionResult& r, double tol, std::size_t maxPoints, int& m, double& edge,
+             std::string& stop) {
+  const double f = spacingFactor(worstMm(r), tol);
+  const int next = static_cast<int>(std::ceil((m - 1) / f)) + 1;
+  if (next <= kMaxReducedResolution) {
+    if (detail::storedRasterPoints(r.ddf.faceCount(), next) > maxPoints) {
+      stop = "the raster point limit (" + std::to_string(maxPoints) + ") stops m at " +
+             std::to_string(m);
+      return false;
+    }
+    m = next;
+    return true;
+  }
+  // Past that m the reduction's coverage checks (m^2 rays per new face) cost more than the
+  // smaller faces that a shorter edge bound gives.
+  edge *= f;
+  return true;
+}
+
+/// A reduced support for a tolerance: the raster spacing is what the tolerance needs, so the
+/// reduction runs with support edges bounded by (m - 1) x the target spacing, and a try that
+/// misses the tolerance reduces the input again at a larger m (then with a shorter edge bound).
+/// Raising m on one reduced support instead would leave stubbles unchecked: the reduction
+/// checks that they hit the input at its own m only.
+ConversionResult convertReducedForTolerance(const TriangleMesh& mesh,
+                                            const ConversionParams& params, double spacingMm) {
+  ConversionResult best;
+  double prevWorst = 0.0, bestPrevWorst = 0.0, lastWorst = 0.0;
+  int m = params.resolution;
+  double edge = (m - 1) * spacingMm;
+  if (params.reduction.maxEdgeMm > 0.0) edge = std::min(edge, params.reduction.maxEdgeMm);
+  std::string stop = "at most " + std::to_string(kReductionTries) + " tries";
+  int tries = 0;
+  while (tries < kReductionTries) {
+    ConversionParams p = params;
+    p.rasterSpacingMm = 0.0;
+    p.resolution = m;
+    p.reduction.maxEdgeMm = edge;
+    const double from = 1.0 - std::pow(0.5, tries);
+    const double to = tries + 1 == kReductionTries ? 1.0 : 1.0 - std::pow(0.5, tries + 1);
+    p.progress = detail::progressShare(params.progress, from, to);
+    ConversionResult r = convertOnce(mesh, p, false);
+    ++tries;
+    log(LogLevel::Info, "mesh conversion: reduced support with edges <= " + detail::mm(edge) +
+                            ": " + std::to_string(r.ddf.faceCount()) +
+                            " faces at m = " + std::to_string(m) + ", input -> DDF " +
+                            detail::mm(r.accuracy.inputToDdfMm) + " at " +
+                            detail::at(r.accuracy.worstInputPoint) + ", DDF -> input " +
+                            detail::mm(r.accuracy.ddfToInputMm) + ", " +
+                            std::to_string(r.unfilledPoints) + " stubbles missed");
+    prevWorst = lastWorst;
+    lastWorst = worstMm(r);
+    const bool stopHere = r.accuracy.toleranceMet ||
+                          !nextTry(r, params.toleranceMm, params.maxRasterPoints, m, edge, stop);
+    if (tries == 1 || lastWorst < worstMm(best)) best = std::move(r), bestPrevWorst = prevWorst;
+    if (stopHere) break;
+  }
+  best.accuracy.resolutionTries = tries;
+  if (!best.accuracy.toleranceMet) {
+    best.accuracy.note =
+        detail::toleranceNote(best.accuracy, reducedLimit(best, stop, bestPrevWorst, tries));
+    log(LogLevel::Warning, "mesh conversion: " + best.accuracy.note);
+  }
+  best.report.accuracy = best.accuracy;
+  return best;
+}
+
+}  // namespace
+
+ConversionResult convertMeshToDdf(const TriangleMesh& mesh, const ConversionParams& params) {
+  if (params.support != SupportChoice::Reduced || !(params.toleranceMm > 0.0) ||
+      !params.chooseLengths)
+    return convertOnce(mesh, params, true);
+  checkInput(mesh, params);
+  const double spacing = params.rasterSpacingMm > 0.0 ? params.rasterSpacingMm : medianEdgeMm(mesh);
+  if (!(spacing > 0.0)) return convertOnce(mesh, params, true);
+  return convertReducedForTolerance(mesh, params, spacing);
 }
 
 }  // namespace ddfcam::ddf

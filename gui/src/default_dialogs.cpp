@@ -2,6 +2,7 @@
 // ddfcam gui: interactive defaults of WorkbenchDialogs.
 #include <ddfcam/gui/default_dialogs.h>
 
+#include <ddfcam/gui/part_import_dialog.h>
 #include <ddfcam/gui/path_export_dialog.h>
 #include <ddfcam/gui/path_import.h>
 
@@ -9,6 +10,7 @@
 #include <QInputDialog>
 #include <QMessageBox>
 #include <QPointer>
+#include <QPushButton>
 #include <QRegularExpression>
 
 namespace ddfcam::gui {
@@ -19,8 +21,9 @@ std::function<QString()> openDialog(QPointer<QWidget> parent) {
   return [parent] {
     return QFileDialog::getOpenFileName(
         parent, QObject::tr("Open project or part"), QString(),
-        QObject::tr("Projects and parts (*.ddfproj *.ddf *.stl *.obj *.ply *.off);;"
-                    "Projects (*.ddfproj);;DDF (*.ddf);;Meshes (*.stl *.obj *.ply *.off);;"
+        QObject::tr("Projects and parts (*.ddfproj *.ddf *.stl *.obj *.ply *.off *.step *.stp "
+                    "*.iges *.igs);;Projects (*.ddfproj);;DDF (*.ddf);;"
+                    "Meshes (*.stl *.obj *.ply *.off);;CAD (*.step *.stp *.iges *.igs);;"
                     "All files (*)"));
   };
 }
@@ -89,6 +92,28 @@ void addPathDialogs(WorkbenchDialogs& d, QPointer<QWidget> parent) {
     };
 }
 
+void addPartDialogs(WorkbenchDialogs& d, QPointer<QWidget> parent) {
+  if (!d.importPart)
+    d.importPart = [parent](const PartImportRequest& request,
+                            const PartImportChoices& initial) -> std::optional<PartImportChoices> {
+      PartImportDialog dialog(request, initial, parent);
+      if (dialog.exec() != QDialog::Accepted) return std::nullopt;
+      return dialog.choices();
+    };
+  if (!d.offerLargestStock)
+    d.offerLargestStock = [parent](const QString& message, double largestMm) {
+      QMessageBox box(QMessageBox::Warning, QObject::tr("Stock not held"), message,
+                      QMessageBox::NoButton, parent);
+      QPushButton* again =
+          box.addButton(QObject::tr("Import again with %1 mm").arg(largestMm, 0, 'g', 3),
+                        QMessageBox::AcceptRole);
+      box.addButton(QObject::tr("Keep the part as imported"), QMessageBox::RejectRole);
+      again->setEnabled(largestMm > 0.0);
+      box.exec();
+      return box.clickedButton() == again;
+    };
+}
+
 }  // namespace
 
 WorkbenchDialogs withDefaultDialogs(WorkbenchDialogs d, QWidget* parent) {
@@ -104,6 +129,7 @@ WorkbenchDialogs withDefaultDialogs(WorkbenchDialogs d, QWidget* parent) {
   if (!d.offerRecovery) d.offerRecovery = recoveryDialog(guarded);
   if (!d.error) d.error = messageBoxReporter(parent);
   addPathDialogs(d, guarded);
+  addPartDialogs(d, guarded);
   return d;
 }
 

@@ -145,6 +145,7 @@ void MainWindow::createDocks() {
             if (!valid) console_->raise();
           });
   workbench_->mouldView = mouldView_;
+  workbench_->projectActions = projectActions_.get();
 }
 
 void MainWindow::registerPanel(Panel* panel) {
@@ -328,6 +329,10 @@ void MainWindow::createViewMenu() {
          [this](bool on) { partView_->setPathsVisible(on); });
   toggle(tr("Displacement &vectors (arrows)"), "actionShowVectors", false,
          [this](bool on) { partView_->setVectorGlyphsVisible(on); });
+  toggle(tr("C&rust h = +1 (translucent)"), "actionShowCrustAbove", false,
+         [this](bool on) { partView_->setCrustVisible(+1, on); });
+  toggle(tr("Crust h = -&1 (translucent)"), "actionShowCrustBelow", false,
+         [this](bool on) { partView_->setCrustVisible(-1, on); });
   menu->addSeparator();
   menu->addActions(cameraBar_->actions());
   menu->addSeparator();

@@ -3,6 +3,7 @@
 #include <ddfcam/gui/part_view.h>
 
 #include <ddfcam/error.h>
+#include <ddfcam/gui/adapters/crust_surface.h>
 #include <ddfcam/gui/adapters/poly_data.h>
 #include <ddfcam/gui/part_scene.h>
 #include <ddfcam/gui/vtk_view.h>
@@ -71,8 +72,9 @@ std::string PartView::summary() const {
   if (!p.part || !geometry_) return "no part";
   const ddf::DisplacementField& f = *p.part;
   std::ostringstream out;
-  out << p.partName << "   faces: " << withThousands(f.faceCount()) << "   m: " << f.resolution()
-      << "   points: " << withThousands(f.topology().pointCount())
+  out << p.partName;
+  if (facts_) out << "   " << sizeLine(facts_->sizeMm()) << "   " << supportLine(f, *facts_);
+  out << "   points: " << withThousands(f.topology().pointCount())
       << "   surface: " << withThousands(geometry_->surfaceTriangles) << " triangles";
   if (geometry_->adaptiveSurface)
     out << " (adaptive, eps " << std::setprecision(2) << geometry_->adaptiveEpsMm << " mm)";
@@ -88,6 +90,8 @@ void PartView::onDocumentChanged(Changes what) {
     setToolOverlay(std::nullopt);
     scene_->removeOverlay(kPickOverlay);
     rebuildGlyphOverlay();
+    rebuildCrustOverlay(+1);
+    rebuildCrustOverlay(-1);
   }
   if (what & (Change::Fields | Change::Part | Change::Heights)) {
     if (!display_.field.empty() && !findField(document_.project(), display_.field))
@@ -101,11 +105,13 @@ void PartView::rebuildGeometry(bool partReplaced) {
   const planning::Project& p = document_.project();
   if (!p.part) {
     geometry_.reset();
+    facts_.reset();
     scene_->setGeometry(SceneGeometry{});
   } else {
     auto geometry = std::make_unique<PartGeometry>(buildPartGeometry(*p.part, params_));
     scene_->setGeometry(geometry->scene);
     geometry_ = std::move(geometry);
+    facts_ = partFacts(*p.part);
   }
   emit geometryChanged(partReplaced);
 }
@@ -250,6 +256,37 @@ void PartView::rebuildGlyphOverlay() {
   // Arrows one mean vector long: their tips trace roughly the +1 crust.
   scene_->setOverlay(kGlyphOverlay, toGlyphPolyData(points, directions, meanLength), style);
   scene_->setOverlayVisible(kGlyphOverlay, glyphsVisible_);
+}
+
+std::string PartView::crustOverlayName(int side) {
+  return side > 0 ? "crust+1" : "crust-1";
+}
+
+void PartView::rebuildCrustOverlay(int side) {
+  const std::string name = crustOverlayName(side);
+  const planning::Project& p = document_.project();
+  // Built only while shown: most sessions never look at the crust.
+  if (!p.part || !crustVisible_[side > 0 ? 0 : 1]) {
+    scene_->removeOverlay(name);
+    return;
+  }
+  OverlayStyle style;
+  style.surface = true;
+  style.opacity = 0.3;
+  style.rgb = side > 0 ? std::array{0.35, 0.6, 1.0} : std::array{1.0, 0.55, 0.25};
+  scene_->setOverlay(name, toCrustPolyData(*p.part, side), style);
+}
+
+void PartView::setCrustVisible(int side, bool visible) {
+  if (side != 1 && side != -1)
+    throw InvalidInput("crust side must be +1 or -1, not " + std::to_string(side));
+  crustVisible_[side > 0 ? 0 : 1] = visible;
+  rebuildCrustOverlay(side);
+  view_.requestRender();
+}
+
+bool PartView::isCrustVisible(int side) const {
+  return crustVisible_[side > 0 ? 0 : 1];
 }
 
 void PartView::setVectorGlyphsVisible(bool visible) {

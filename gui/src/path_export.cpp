@@ -32,8 +32,8 @@ bool dialectBelongs(PathExportFormat format, PathExportDialect dialect) {
 }
 
 QString unitKey(io::LengthUnit unit) {
-  return QString::fromUtf8(io::lengthUnitName(unit).data(),
-                           static_cast<int>(io::lengthUnitName(unit).size()));
+  return QString::fromUtf8(io::unitSymbol(unit).data(),
+                           static_cast<int>(io::unitSymbol(unit).size()));
 }
 
 bool isCutter(planning::ToolKind kind) {

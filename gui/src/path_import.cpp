@@ -39,7 +39,7 @@ namespace ddfcam::gui {
 namespace {
 
 QString unitText(io::LengthUnit unit) {
-  const std::string_view name = io::lengthUnitName(unit);
+  const std::string_view name = io::unitSymbol(unit);
   return QString::fromUtf8(name.data(), static_cast<int>(name.size()));
 }
 

@@ -44,31 +44,59 @@ bool ProjectActions::canOpen(const QString& path) {
 
 bool ProjectActions::openPath(const QString& path) {
   if (!maybeSave()) return false;
+  if (isImportablePart(path)) {
+    const PartImportRequest request = readImportRequest(path);
+    const PartImportChoices initial = initialImportChoices(request, recentChoices_);
+    const std::optional<PartImportChoices> choices =
+        dialogs_.importPart ? dialogs_.importPart(request, initial) : initial;
+    if (!choices) return false;
+    recentChoices_ = *choices;
+    return importPart(path, *choices);
+  }
   const QString title = tr("Open %1").arg(QFileInfo(path).fileName());
-  return startLoad(title, path, [this](const QString& loaded) {
+  return startLoad(title, path, {}, [this](const QString& loaded, auto) {
     recent_.add(loaded);
+    partReport_.reset();
     emit opened(loaded);
+    emit partReportChanged();
   });
+}
+
+bool ProjectActions::importPart(const QString& path, const PartImportChoices& choices) {
+  const QString title = tr("Import %1").arg(QFileInfo(path).fileName());
+  return startLoad(title, path, loadParamsFor(choices),
+                   [this, choices](const QString& loaded, std::shared_ptr<io::LoadPartReport> r) {
+                     recent_.add(loaded);
+                     emit opened(loaded);
+                     takePartReport(loaded, std::move(r), choices);
+                   });
 }
 
 bool ProjectActions::newProject() {
   if (!maybeSave()) return false;
-  return runUserAction(dialogs_.error, tr("New project"),
-                       [&] { document_.reset(planning::Project{}); });
+  return runUserAction(dialogs_.error, tr("New project"), [&] {
+    document_.reset(planning::Project{});
+    partReport_.reset();
+    emit partReportChanged();
+  });
 }
 
 bool ProjectActions::openDemo() {
   if (!maybeSave()) return false;
-  return startLoad(tr("Open demo part"), QString(), [this](const QString&) { emit opened({}); });
+  return startLoad(tr("Open demo part"), QString(), {}, [this](const QString&, auto) {
+    partReport_.reset();
+    emit opened({});
+    emit partReportChanged();
+  });
 }
 
-bool ProjectActions::startLoad(const QString& title, const QString& path,
-                               std::function<void(const QString&)> onLoaded) {
+bool ProjectActions::startLoad(const QString& title, const QString& path, io::LoadPartParams params,
+                               LoadedStep onLoaded) {
   Document* document = &document_;
   const bool isProject = !path.isEmpty() && io::isProjectFile(toPath(path));
   const QPointer<ProjectActions> self(this);
-  JobWork work = [path, isProject, document, onLoaded, self](const ProgressCallback& progress) {
-    io::LoadPartParams params;
+  JobWork work = [path, isProject, document, onLoaded, self,
+                  params = std::move(params)](const ProgressCallback& progress) mutable {
     params.progress = progress;
     auto report = std::make_shared<io::LoadPartReport>();
     auto project = std::make_shared<planning::Project>(
@@ -76,7 +104,7 @@ bool ProjectActions::startLoad(const QString& title, const QString& path,
                        : io::openProject(toPath(path), params, report.get()));
     return std::function<void()>([project, report, path, isProject, document, onLoaded, self] {
       document->reset(std::move(*project), isProject ? path : QString());
-      onLoaded(path);
+      onLoaded(path, report);
       if (report->converted && self) self->announceConversion(path, report->conversion);
     });
   };
@@ -88,6 +116,32 @@ bool ProjectActions::startLoad(const QString& title, const QString& path,
     return false;
   }
   return true;
+}
+
+void ProjectActions::takePartReport(const QString& path, std::shared_ptr<io::LoadPartReport> report,
+                                    const PartImportChoices& choices) {
+  partReport_ = *report;
+  emit partReportChanged();
+  if (!report->stock || report->stock->holds) return;
+  const ddf::StockFit& fit = *report->stock;
+  const QString message =
+      fit.limit
+          ? QString::fromStdString(fit.limit->message)
+          : tr("The crust does not reach %1 mm above the surface everywhere.").arg(fit.requestedMm);
+  ddfcam::log(LogLevel::Warning, QFileInfo(path).fileName().toStdString() +
+                                     ": stock not held: " + message.toStdString());
+  const double largest = fit.limit ? fit.limit->largestAllowanceMm : 0.0;
+  // After the job has finished: the offer may start the next import.
+  QMetaObject::invokeMethod(
+      this,
+      [this, path, message, largest, choices] {
+        if (!dialogs_.offerLargestStock || !dialogs_.offerLargestStock(message, largest)) return;
+        PartImportChoices again = choices;
+        again.stockMm = largest;
+        recentChoices_ = again;
+        importPart(path, again);
+      },
+      Qt::QueuedConnection);
 }
 
 void ProjectActions::announceConversion(const QString& path, const ddf::ConversionReport& report) {
@@ -157,6 +211,8 @@ bool ProjectActions::offerRecovery(RecoveryManager& recovery) {
     planning::Project project = recovery.recover(entry);
     document_.reset(std::move(project), entry.originalPath);
     document_.markModified();
+    partReport_.reset();
+    emit partReportChanged();
   });
 }
 

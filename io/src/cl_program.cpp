@@ -6,30 +6,6 @@
 
 namespace ddfcam::io {
 
-double millimetresPer(LengthUnit unit) {
-  switch (unit) {
-    case LengthUnit::Inch:
-      return 25.4;
-    case LengthUnit::Metre:
-      return 1000.0;
-    case LengthUnit::Millimetre:
-      break;
-  }
-  return 1.0;
-}
-
-std::string_view lengthUnitName(LengthUnit unit) {
-  switch (unit) {
-    case LengthUnit::Inch:
-      return "in";
-    case LengthUnit::Metre:
-      return "m";
-    case LengthUnit::Millimetre:
-      break;
-  }
-  return "mm";
-}
-
 bool ClProgram::multiAxis() const {
   return std::any_of(points.begin(), points.end(),
                      [](const ClPoint& p) { return p.axis.has_value(); });

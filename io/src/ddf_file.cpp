@@ -7,6 +7,7 @@
 
 #include "byte_codec.h"
 #include "ddf_layout.h"
+#include "ddf_metadata.h"
 #include "file_access.h"
 
 #include <algorithm>
@@ -48,9 +49,10 @@ void putVec3(std::string& out, const ddf::Vec3& v) {
   for (int i = 0; i < 3; ++i) detail::putF64(out, v[i]);
 }
 
-void encode(const ddf::DisplacementField& field, DdfEncoder& encoder) {
+void encode(const ddf::DisplacementField& field, const DdfMetadata* metadata, DdfEncoder& encoder) {
   std::string& out = encoder.buffer();
   DdfHeader header;
+  header.version = metadata ? 2 : 1;
   header.vertexCount = static_cast<std::uint64_t>(field.vertexCount());
   header.faceCount = static_cast<std::uint64_t>(field.faceCount());
   header.m = static_cast<std::uint32_t>(field.resolution());
@@ -63,6 +65,7 @@ void encode(const ddf::DisplacementField& field, DdfEncoder& encoder) {
     for (const int v : field.faceVertices(f)) detail::putU32(out, static_cast<std::uint32_t>(v));
   for (int f = 0; f < field.faceCount(); ++f, encoder.flushIfLarge())
     for (const float h : field.heights(f)) detail::putF32(out, h);
+  if (metadata) detail::putDdfMetadata(out, *metadata);
   encoder.finish();
 }
 
@@ -102,23 +105,44 @@ struct BodyDecoder {
   }
 };
 
-}  // namespace
-
-std::string encodeDdf(const ddf::DisplacementField& field) {
+std::string encodeWith(const ddf::DisplacementField& field, const DdfMetadata* metadata) {
   std::string content;
   DdfEncoder encoder([&](std::string_view chunk) { content.append(chunk); });
-  encode(field, encoder);
+  encode(field, metadata, encoder);
   return content;
 }
 
-void writeDdf(const ddf::DisplacementField& field, const std::filesystem::path& path) {
+void writeWith(const ddf::DisplacementField& field, const std::filesystem::path& path,
+               const DdfMetadata* metadata) {
   detail::AtomicFileWriter writer(path);
   DdfEncoder encoder([&](std::string_view chunk) { writer.write(chunk); });
-  encode(field, encoder);
+  encode(field, metadata, encoder);
   writer.commit();
 }
 
-ddf::DisplacementField decodeDdf(std::string_view bytes, const std::string& sourceName) {
+}  // namespace
+
+std::string encodeDdf(const ddf::DisplacementField& field) {
+  return encodeWith(field, nullptr);
+}
+
+std::string encodeDdf(const ddf::DisplacementField& field, const DdfMetadata& metadata) {
+  detail::checkDdfMetadata(metadata, field.faceCount());
+  return encodeWith(field, &metadata);
+}
+
+void writeDdf(const ddf::DisplacementField& field, const std::filesystem::path& path) {
+  writeWith(field, path, nullptr);
+}
+
+void writeDdf(const ddf::DisplacementField& field, const std::filesystem::path& path,
+              const DdfMetadata& metadata) {
+  detail::checkDdfMetadata(metadata, field.faceCount());
+  writeWith(field, path, &metadata);
+}
+
+ddf::DisplacementField decodeDdf(std::string_view bytes, const std::string& sourceName,
+                                 DdfMetadata* metadata) {
   const DdfHeader header = detail::checkDdfEnvelope(bytes, sourceName);
   BodyDecoder body{bytes.data() + detail::kDdfHeaderBytes, sourceName};
   std::vector<ddf::Vec3> positions = body.vec3List(header.vertexCount, "position");
@@ -146,11 +170,17 @@ ddf::DisplacementField decodeDdf(std::string_view bytes, const std::string& sour
                              field.heights(f));
     }
   }
+  // A damaged section is an error also for callers that do not ask for the metadata.
+  DdfMetadata read;
+  if (header.version >= 2)
+    read = detail::readDdfMetadata(std::string_view(body.p + 4, header.metadataBytes),
+                                   field.faceCount(), sourceName);
+  if (metadata) *metadata = std::move(read);
   return field;
 }
 
-ddf::DisplacementField readDdf(const std::filesystem::path& path) {
-  return decodeDdf(detail::readFileBytes(path), path.string());
+ddf::DisplacementField readDdf(const std::filesystem::path& path, DdfMetadata* metadata) {
+  return decodeDdf(detail::readFileBytes(path), path.string(), metadata);
 }
 
 }  // namespace ddfcam::io

@@ -77,7 +77,7 @@ DdfHeader parseHeader(std::string_view bytes, const std::string& name) {
 
 void putDdfHeader(std::string& out, const DdfHeader& header) {
   out.append(kDdfMagic);
-  putU32(out, kDdfFormatVersion);
+  putU32(out, header.version);
   putU32(out, kDdfByteOrderMark);
   putU64(out, header.vertexCount);
   putU64(out, header.faceCount);
@@ -87,7 +87,7 @@ void putDdfHeader(std::string& out, const DdfHeader& header) {
 
 DdfHeader checkDdfEnvelope(std::string_view bytes, const std::string& name) {
   checkIdentity(bytes, name);
-  const DdfHeader header = parseHeader(bytes, name);
+  DdfHeader header = parseHeader(bytes, name);
   const std::uint64_t perFace = std::uint64_t{header.m} * (header.m + 1) / 2;
   auto size = mulAdd(header.vertexCount, 48, kDdfHeaderBytes + kDdfChecksumBytes);
   if (size) size = mulAdd(header.faceCount, 12, *size);
@@ -96,6 +96,14 @@ DdfHeader checkDdfEnvelope(std::string_view bytes, const std::string& name) {
   else
     size.reset();
   if (!size) fail(name, "corrupted .ddf header: counts overflow the file size");
+  if (header.version >= 2) {
+    // The section's length sits where a version-1 file has its checksum.
+    const std::uint64_t at = *size - kDdfChecksumBytes;
+    if (bytes.size() < at + 4)
+      fail(name, "truncated .ddf file: it ends before the length of its metadata section");
+    header.metadataBytes = getU32(bytes.data() + at);
+    size = *size + 4 + header.metadataBytes;
+  }
   if (bytes.size() < *size)
     fail(name, "truncated .ddf file: the header promises " + std::to_string(*size) +
                    " bytes but the file has " + std::to_string(bytes.size()));

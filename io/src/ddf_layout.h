@@ -22,16 +22,20 @@ inline constexpr std::uint32_t kDdfMaxResolution = 1u << 15;
 
 /// @brief The fixed-size header of a .ddf file.
 struct DdfHeader {
-  std::uint32_t version = 1;
+  std::uint32_t version = 1;  ///< 1: no metadata section; 2: with one
   std::uint64_t vertexCount = 0;
   std::uint64_t faceCount = 0;
   std::uint32_t m = 2;
+  /// Version 2: byte count L of the metadata section after its u32 length (set by
+  /// checkDdfEnvelope; not part of the 40 header bytes).
+  std::uint64_t metadataBytes = 0;
 };
 
-/// @brief Appends the 40 header bytes for @p header (current version, byte-order marker).
+/// @brief Appends the 40 header bytes for @p header (its version, byte-order marker).
 void putDdfHeader(std::string& out, const DdfHeader& header);
 
-/// @brief Validates magic, version, byte order, counts, exact file size and checksum.
+/// @brief Validates magic, version, byte order, counts, exact file size (for version 2 with
+/// the metadata section's length) and checksum.
 /// @return the header; after this, the body can be decoded without bounds checks.
 /// @throws IoError "<sourceName>: <what is wrong>".
 DdfHeader checkDdfEnvelope(std::string_view bytes, const std::string& sourceName);

@@ -102,7 +102,7 @@ void writeHeader(Blocks& out, const ClProgram& program, const planning::Tool& to
   if (!program.partName.empty()) out.comment("part: " + program.partName);
   out.comment("tool: " + std::string(planning::toolKindName(tool.kind)) + " R" +
               fixed(tool.radiusMm, 4) + " mm, " + tool.name);
-  out.comment("positions: tool tip, " + std::string(lengthUnitName(p.unit)));
+  out.comment("positions: tool tip, " + std::string(unitSymbol(p.unit)));
   if (five) {
     out.comment("pivot " + vecText(p.kinematics.pivotMm) + " mm, C offset " +
                 vecText(p.kinematics.rotaryOffsetMm) + " mm");

@@ -12,6 +12,7 @@
 #include "mould_study_chunk.h"
 #include "project_chunks.h"
 #include "project_layout.h"
+#include "project_source_chunk.h"
 
 #include <exception>
 
@@ -55,6 +56,10 @@ class ProjectDecoder {
     } else if (chunk.tag == detail::kTagDesign) {
       if (project_.designMesh) in.fail("a second design mesh");
       project_.designMesh = detail::readDesignMesh(in);
+    } else if (chunk.tag == detail::kTagSource) {
+      if (sawSource_) in.fail("a second part source");
+      detail::readPartSource(in, project_);
+      sawSource_ = true;
     } else if (chunk.tag == detail::kTagMould && version_ >= 4) {
       if (project_.mould) in.fail("a second mould study");
       project_.mould = detail::readMouldStudy(in);
@@ -67,6 +72,7 @@ class ProjectDecoder {
   planning::Project finish() {
     if (!sawProject_) throw IoError(name_ + ": damaged project file: it holds no 'PROJ' chunk");
     try {
+      detail::checkPartSource(project_);
       planning::validateProject(project_);
     } catch (const InvalidInput&) {
       std::throw_with_nested(IoError(name_ + ": the project in the file is invalid"));
@@ -112,15 +118,19 @@ class ProjectDecoder {
   ProjectReadReport& report_;
   planning::Project project_;
   bool sawProject_ = false;
+  bool sawSource_ = false;
 };
 
 }  // namespace
 
 std::string encodeProject(const planning::Project& project) {
   planning::validateProject(project);
+  detail::checkPartSource(project);
   detail::ProjectEncoder encoder;
   detail::putProjectInfo(encoder.beginChunk(detail::kTagProject), project);
   if (project.part) encoder.beginChunk(detail::kTagPart).append(encodeDdf(*project.part));
+  if (detail::hasPartSource(project))
+    detail::putPartSource(encoder.beginChunk(detail::kTagSource), project);
   if (project.designMesh)
     detail::putDesignMesh(encoder.beginChunk(detail::kTagDesign), *project.designMesh);
   for (const planning::Tool& tool : project.tools)

@@ -2,6 +2,7 @@
 // ddfcam: openProject, the one entry point for "File > Open".
 #include <ddfcam/io/project_loader.h>
 
+#include <ddfcam/io/cad_model.h>
 #include <ddfcam/io/mesh_io.h>
 #include <ddfcam/io/project_file.h>
 #include <ddfcam/progress.h>
@@ -19,7 +20,8 @@ bool isProjectFile(const std::filesystem::path& path) {
 }
 
 bool canOpenAsProject(const std::filesystem::path& path) {
-  return isProjectFile(path) || lowerExtension(path) == ".ddf" || meshFormatOf(path).has_value();
+  return isProjectFile(path) || lowerExtension(path) == ".ddf" || meshFormatOf(path).has_value() ||
+         isCadFile(path);
 }
 
 planning::Project openProject(const std::filesystem::path& path, const LoadPartParams& params,
@@ -33,12 +35,16 @@ planning::Project openProject(const std::filesystem::path& path, const LoadPartP
   }
   LoadPartReport report;
   planning::Project project;
-  project.part = loadPart(path, params, &report);
+  LoadedPart part = loadPartWithInput(path, params, &report);
+  project.part = std::move(part.ddf);
   project.partName = path.filename().string();
   project.sourcePath = path.string();
-  // The conversion only reads the mesh; keeping it as the design lets the engineer measure
-  // the part against what was delivered. A second read costs a small share of the conversion.
-  if (report.converted) project.designMesh = readMesh(path);
+  project.sourceUnit = report.unit;
+  project.cadFaceOfSupportFace = report.cadFaceOfSupportFace;
+  project.cadFaceNames = report.cadFaceNames;
+  // The converted triangles (the scaled mesh, or a CAD model's tessellation) are the design:
+  // the engineer measures the part against what was delivered.
+  if (report.converted) project.designMesh = std::move(part.inputMesh);
   project.states.push_back({"stock", project.part->allHeights()});
   if (out) *out = std::move(report);
   return project;

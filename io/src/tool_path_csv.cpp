@@ -84,7 +84,7 @@ std::string sanitised(const std::string& name) {
 
 std::string toolPathCsvHeader(ClPointKind kind, LengthUnit unit) {
   const std::string p = kind == ClPointKind::Contact ? "contact" : "tool";
-  const std::string u(lengthUnitName(unit));
+  const std::string u(unitSymbol(unit));
   return "path,point," + p + "_x_" + u + "," + p + "_y_" + u + "," + p + "_z_" + u +
          ",axis_i,axis_j,axis_k,normal_x,normal_y,normal_z,feed_" + u + "_per_min,move";
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // ddfcam: workpiece DDFs for grinding simulation and the volume between two height fields.
 #include <ddfcam/ddf/crust_hash.h>
+#include <ddfcam/ddf/raster_normal.h>
 #include <ddfcam/error.h>
 #include <ddfcam/planning/workpiece.h>
 
@@ -13,27 +14,6 @@ namespace {
 
 using ddf::Vec3;
 
-// Unit normal of the goal's raster surface at (i, k) of face f, on the side of v: the
-// area-weighted normal of the raster triangles of the face around the point (up to 6).
-Vec3 rasterNormal(const ddf::DisplacementField& field, int f, int i, int k) {
-  static constexpr int kRing[6][2] = {{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
-  const int n = field.raster().steps();
-  auto valid = [n](int ii, int kk) { return ii >= 0 && kk >= 0 && ii + kk <= n; };
-  const Vec3 q = field.surfacePoint(f, i, k);
-  Vec3 normal = Vec3::Zero();
-  for (int a = 0; a < 6; ++a) {
-    const int b = (a + 1) % 6;
-    const int ia = i + kRing[a][0], ka = k + kRing[a][1];
-    const int ib = i + kRing[b][0], kb = k + kRing[b][1];
-    if (!valid(ia, ka) || !valid(ib, kb)) continue;
-    normal += (field.surfacePoint(f, ia, ka) - q).cross(field.surfacePoint(f, ib, kb) - q);
-  }
-  const Vec3 v = field.vectorAt(f, field.rasterBary(i, k));
-  if (normal.squaredNorm() == 0.0) return v.normalized();  // m = 2 corner without triangles
-  normal.normalize();
-  return normal.dot(v) < 0.0 ? Vec3(-normal) : normal;
-}
-
 }  // namespace
 
 ddf::DisplacementField workpieceWithAllowance(const ddf::DisplacementField& goal,
@@ -44,7 +24,7 @@ ddf::DisplacementField workpieceWithAllowance(const ddf::DisplacementField& goal
     for (int k = 0; k <= goal.raster().steps(); ++k)
       for (int i = 0; i < goal.raster().rowLength(k); ++i) {
         const Vec3 v = goal.vectorAt(f, goal.rasterBary(i, k));
-        const double vn = v.dot(rasterNormal(goal, f, i, k));
+        const double vn = v.dot(ddf::rasterNormal(goal, f, i, k));
         float& h = heights[goal.raster().index(i, k)];
         if (!(vn > 0.0)) {
           std::ostringstream s;
@@ -59,7 +39,10 @@ ddf::DisplacementField workpieceWithAllowance(const ddf::DisplacementField& goal
           s << "workpieceWithAllowance: an allowance of " << allowanceMm << " mm leaves the crust"
             << " at face " << f << " raster point (" << i << ", " << k << "): the crust there"
             << " extends " << (1.0 - h) * vn << " mm above and " << (h + 1.0) * vn
-            << " mm below the surface along the normal (" << 2.0 * vn << " mm thick)";
+            << " mm below the surface along the normal (" << 2.0 * vn << " mm thick); convert"
+            << " the part with a stock allowance of at least " << allowanceMm << " mm"
+            << " (ddfcam-cli convert --stock MM, or Stock in the import dialog) so that its crust"
+            << " holds it";
           throw InvalidInput(s.str());
         }
         h = static_cast<float>(raised);

@@ -109,7 +109,8 @@ void MainWindowTest::startsOnDemoSession() {
   const ddfcam::ddf::DemoPartParams demo;
   QCOMPARE(project().part->faceCount(), 2 * demo.cellsX * demo.cellsY);
   QCOMPARE(project().part->resolution(), demo.m);
-  QVERIFY2(f_.window->statusText().contains("faces: 1,536"), qPrintable(f_.window->statusText()));
+  QVERIFY2(f_.window->statusText().contains("support 1,536 faces, m = "),
+           qPrintable(f_.window->statusText()));
   QVERIFY(f_.window->partView().scene().cellCount(Layer::Surface) > 1000);
   // The demo session brings a tool and a path to simulate, and the path is drawn.
   QCOMPARE(project().tools.size(), std::size_t{1});
@@ -156,6 +157,8 @@ void MainWindowTest::overlaysChangeTheImage_data() {
   QTest::newRow("stubbles") << "actionShowStubbles";
   QTest::newRow("vectors") << "actionShowVectors";
   QTest::newRow("paths") << "actionShowPaths";
+  QTest::newRow("crust above") << "actionShowCrustAbove";
+  QTest::newRow("crust below") << "actionShowCrustBelow";
 }
 
 void MainWindowTest::overlaysChangeTheImage() {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <ddfcam/gui/main_window.h>
+#include <ddfcam/gui/part_import_dialog.h>
 #include <ddfcam/gui/path_export_dialog.h>
 #include <ddfcam/gui/path_import.h>
 
@@ -27,6 +28,22 @@ struct ScriptedDialogs {
   QStringList offeredRecoveries;
   QStringList errors;
   QString importPathFile;  ///< File > Import tool path's file; empty: cancelled
+  /// Answer of the part import dialog. Default: the conversion as before the dialog existed
+  /// (input mesh as support, resolution as given, mm), so tests of other features keep their
+  /// parts; nullopt: cancelled. acceptInitialImport answers with the dialog's initial choices.
+  std::optional<gui::PartImportChoices> importChoices = legacyImport();
+  bool acceptInitialImport = false;
+  QList<gui::PartImportRequest> importRequests;        ///< every request the dialog got
+  QList<gui::PartImportChoices> importInitialChoices;  ///< and what it started with
+  QStringList stockOffers;                             ///< "message|largest" of every stock offer
+  bool acceptLargestStock = false;                     ///< answer to the stock offer
+
+  static gui::PartImportChoices legacyImport() {
+    gui::PartImportChoices c;
+    c.toleranceMm = 0.0;
+    c.support = ddf::SupportChoice::Input;
+    return c;
+  }
 
   gui::WorkbenchDialogs dialogs() {
     gui::WorkbenchDialogs d;
@@ -48,6 +65,16 @@ struct ScriptedDialogs {
     };
     d.importPath = [](const gui::PathImportRequest&, const gui::PathImportOptions&) {
       return std::optional<gui::PathImportOptions>();
+    };
+    d.importPart = [this](const gui::PartImportRequest& request,
+                          const gui::PartImportChoices& initial) {
+      importRequests << request;
+      importInitialChoices << initial;
+      return acceptInitialImport ? std::optional(initial) : importChoices;
+    };
+    d.offerLargestStock = [this](const QString& message, double largestMm) {
+      stockOffers << message + "|" + QString::number(largestMm);
+      return acceptLargestStock;
     };
     return d;
   }

@@ -119,6 +119,40 @@ TEST(CliCompare, FlippedNormalAndBandMirrorTheStatistics) {
   EXPECT_GT(checked, 100);
 }
 
+TEST(CliCompare, SheetsInMetresWithUnitsMGiveTheStatisticsInMm) {
+  // The sinusoid pair of the arcsine test written in metres (40 x 10 mm is 0.04 x 0.01 m, so
+  // without --units it draws the size warning); read with --units m it is the same pair.
+  test::ScratchDir dir;
+  const auto inMetres = [](ddf::TriangleMesh mesh) {
+    for (Eigen::Vector3d& v : mesh.vertices) v /= 1000.0;
+    return mesh;
+  };
+  writeMesh(inMetres(test::flatSheet()), dir / "mould.obj");
+  writeMesh(inMetres(test::sinusoidSheet(1.0)), dir / "formed.obj");
+  const std::vector<std::string> args = {(dir / "mould.obj").string(),
+                                         (dir / "formed.obj").string(),
+                                         "--resolution",
+                                         "9",
+                                         "--tolerance",
+                                         "0.5",
+                                         "--json",
+                                         (dir / "s.json").string()};
+  std::vector<std::string> withUnits = args;
+  withUnits.insert(withUnits.end(), {"--units", "m"});
+  const CliRun run = test::cli(dir, "compare", withUnits);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_THAT(run.err, ::testing::Not(HasSubstr("units across")));
+  const nlohmann::json json = readJson(dir / "s.json");
+  const nlohmann::json& s = json["statistics"];
+  const double expected = 100.0 * (2.0 / std::numbers::pi) * std::asin(0.5 / 1.0);
+  EXPECT_NEAR(s["within_band_percent"].get<double>(), expected, 1.5);
+  EXPECT_NEAR(s["max_mm"].get<double>(), 1.0, 0.01);
+  EXPECT_NEAR(s["area_mm2"].get<double>(), test::kSheetWidth * test::kSheetDepth, 1e-6);
+  const CliRun warned = test::cli(dir, "compare", args);
+  EXPECT_THAT(warned.err, HasSubstr("mould.obj is 0.04123 units across; if it is not in mm, "
+                                    "pass --units (as m it would be 41.23 mm)"));
+}
+
 TEST(CliCompare, BadUsageAndMissingFilesFailWithAMessage) {
   const SheetPair pair(1.0);
   CliRun run =

@@ -53,6 +53,47 @@ TEST_P(CliConvertShared, EitherInfoValidatesTheResultOrConvertSaidItDoesNot) {
         << info.out;
 }
 
+/// A shared STEP file, or an empty path when the shared data is missing.
+std::filesystem::path sharedCad(const char* name) {
+  const auto file = std::filesystem::path(DDFCAM_SHARED_DATA_DIR) / "cad" / name;
+  return std::filesystem::exists(file) ? file : std::filesystem::path{};
+}
+
+TEST(CliConvertCad, StepConvertsAndInfoNamesItsCadFaces) {
+  // revolved_sphere.step (cad/SOURCES.md): one ADVANCED_FACE on a SPHERICAL_SURFACE, radius
+  // 5 mm, in mm.
+  const auto step = sharedCad("revolved_sphere.step");
+  if (step.empty()) GTEST_SKIP() << "shared CAD data not found";
+  test::ScratchDir dir;
+  const auto output = (dir / "sphere.ddf").string();
+  const auto run =
+      test::runCli(dir, {"convert", step.string(), "-o", output, "--tolerance", "0.05"});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("unit: mm (stated by the file)"));
+  EXPECT_THAT(run.out, HasSubstr("bounds [-5, -5, -5] to [5, 5, 5] mm"));
+  EXPECT_THAT(run.out, HasSubstr("CAD faces: 1"));
+  EXPECT_THAT(run.out, HasSubstr("within the tolerance 0.05 mm"));
+  const auto info = test::runCli(dir, {"info", output});
+  ASSERT_EQ(info.exitCode, 0) << info.err;
+  EXPECT_THAT(info.out, HasSubstr("source unit: mm"));
+  EXPECT_THAT(info.out, HasSubstr("CAD faces: 1"));
+  EXPECT_THAT(info.out, HasSubstr("(sphere): "));
+  EXPECT_THAT(info.out, HasSubstr("validation: ok"));
+}
+
+TEST(CliConvertCad, StepInMetresIsReadInItsOwnUnitWithoutAWarning) {
+  // bolt_clip.step (cad/SOURCES.md): metres, 20 faces, about 11.7 x 5.1 x 3.2 mm.
+  const auto step = sharedCad("bolt_clip.step");
+  if (step.empty()) GTEST_SKIP() << "shared CAD data not found";
+  test::ScratchDir dir;
+  const auto info = test::runCli(
+      dir, {"info", step.string(), "--json", "--support", "input", "--raster-spacing", "0.5"});
+  ASSERT_EQ(info.exitCode, 0) << info.err;
+  EXPECT_THAT(info.out, HasSubstr("\"sourceUnit\": \"m\""));
+  EXPECT_EQ(test::jsonInteger(info.out, "cadFaces"), 20);
+  EXPECT_THAT(info.err, ::testing::Not(HasSubstr("units across")));
+}
+
 INSTANTIATE_TEST_SUITE_P(SharedMeshes, CliConvertShared,
                          ::testing::Values("bun_zipper_res2.ply", "libigl-bunny.off",
                                            "turbine-blade-jigsaw.stl", "fandisk.obj",

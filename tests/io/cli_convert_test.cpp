@@ -20,7 +20,8 @@ TEST(CliConvert, ReportsTheUnusedVerticesAndDuplicateTrianglesItDrops) {
   test::ScratchDir dir;
   writeMesh(test::gridWithStrayVerticesAndDuplicates(), dir / "grid.obj");
   const auto ddfPath = (dir / "grid.ddf").string();
-  const auto run = runCli(dir, {"convert", (dir / "grid.obj").string(), "-o", ddfPath});
+  const auto run =
+      runCli(dir, {"convert", (dir / "grid.obj").string(), "-o", ddfPath, "--support", "input"});
   ASSERT_EQ(run.exitCode, 0) << run.err;
   EXPECT_THAT(run.out, HasSubstr("read " + (dir / "grid.obj").string() + ": 23 vertices"));
   EXPECT_THAT(run.out, HasSubstr("  7 unused vertices dropped"));
@@ -37,7 +38,7 @@ TEST(CliConvert, AnInvalidResultIsNamedAndNotWrittenWithoutAllowInvalid) {
   test::ScratchDir dir;
   const auto input = (dir / "fan.off").string(), output = (dir / "fan.ddf").string();
   writeMesh(test::foldedFanMesh(), input);
-  const auto run = runCli(dir, {"convert", input, "-o", output});
+  const auto run = runCli(dir, {"convert", input, "-o", output, "--support", "input"});
   EXPECT_EQ(run.exitCode, 3) << run.out << run.err;
   EXPECT_THAT(run.err, HasSubstr("INVALID DDF: violates constraint 1 (front-facing vectors)"));
   EXPECT_THAT(run.err, HasSubstr("fails at 1 vertex"));
@@ -45,7 +46,8 @@ TEST(CliConvert, AnInvalidResultIsNamedAndNotWrittenWithoutAllowInvalid) {
   EXPECT_THAT(run.out, Not(HasSubstr("wrote")));
   EXPECT_FALSE(std::filesystem::exists(output));
 
-  const auto allowed = runCli(dir, {"convert", input, "-o", output, "--allow-invalid"});
+  const auto allowed =
+      runCli(dir, {"convert", input, "-o", output, "--support", "input", "--allow-invalid"});
   EXPECT_EQ(allowed.exitCode, 0) << allowed.err;
   EXPECT_THAT(allowed.err, HasSubstr("INVALID DDF"));
   EXPECT_THAT(allowed.out, HasSubstr("(INVALID, --allow-invalid)"));

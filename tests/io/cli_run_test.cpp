@@ -3,6 +3,7 @@
 // readers, two runs give identical bytes, and bad jobs fail naming the problem.
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/io/ddf_file.h>
+#include <ddfcam/io/mesh_io.h>
 #include <ddfcam/io/project_file.h>
 #include <ddfcam/io/tool_library_file.h>
 #include <ddfcam/io/tool_path_csv.h>
@@ -277,6 +278,49 @@ void expectFailure(const std::string& job, const std::vector<std::string>& words
   EXPECT_EQ(run.exitCode, 1) << run.err;
   for (const std::string& w : words) EXPECT_THAT(run.err, HasSubstr(w));
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / "job.ddfproj"));
+}
+
+TEST(CliRun, PartInMetresIsConvertedInItsUnit) {
+  test::ScratchDir dir;
+  // A 0.2 x 0.1 m saddle: in mm its design mesh and part span 200 x 100 mm.
+  ddf::TriangleMesh saddle;
+  for (int j = 0; j <= 4; ++j)
+    for (int i = 0; i <= 8; ++i)
+      saddle.vertices.emplace_back(
+          0.025 * i, 0.025 * j,
+          0.5 * ((0.025 * i - 0.1) * (0.025 * i - 0.1) - (0.025 * j - 0.05) * (0.025 * j - 0.05)));
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 8; ++i) {
+      const int a = 9 * j + i;
+      saddle.triangles.push_back({a, a + 1, a + 10});
+      saddle.triangles.push_back({a, a + 10, a + 9});
+    }
+  writeMesh(saddle, dir / "saddle_m.obj");
+  writeText(dir / "job.json", R"({
+  "part": {"file": "saddle_m.obj", "units": "m", "support": "input", "resolution": 4},
+  "regions": [{"field": "fixed", "direction": [0, 1, 0], "smooth": false, "spacingMm": 40}]
+})");
+  const RunResult run = cli(dir, {"run", (dir / "job.json").string()});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_THAT(run.err, Not(HasSubstr("units across")));
+  const planning::Project project = readProject(dir / "job.ddfproj");
+  EXPECT_EQ(project.sourceUnit, ddfcam::LengthUnit::Metre);
+  ASSERT_TRUE(project.part && project.designMesh);
+  EXPECT_EQ(project.part->faceCount(), 64);  // the input support, not reduced
+  EXPECT_EQ(project.part->resolution(), 4);
+  const auto [lo, hi] = project.designMesh->bounds();
+  EXPECT_NEAR((hi - lo).x(), 200.0, 1e-9);
+  EXPECT_NEAR((hi - lo).y(), 100.0, 1e-9);
+  for (int v = 0; v < project.part->vertexCount(); ++v)
+    EXPECT_LE(project.part->position(v).x(), 200.0 + 1e-6);
+}
+
+TEST(CliRun, BadPartConversionKeysAreNamed) {
+  expectFailure(R"({"part": {"file": "x.stl", "units": "ft"}})", {"part.units", "mm, cm, m or in"});
+  expectFailure(R"({"part": {"file": "x.stl", "support": "coarse"}})",
+                {"part.support", "input|reduced"});
+  expectFailure(R"({"part": {"file": "x.stl", "toleranceMm": 0.1, "rasterSpacingMm": 1}})",
+                {"part.rasterSpacingMm", "not both"});
 }
 
 TEST(CliRun, BadJsonNamesLineAndColumn) {

@@ -106,7 +106,7 @@ TEST(Cli, BadArgumentsGiveOneLineAndExitCode2) {
   expectOneLineError(cli(dir, {"extract", "a.ddf", "-o", "b.txt"}), 2, "must end in .stl");
   expectOneLineError(cli(dir, {"extract", "a.ddf", "-o", "b.stl", "--eps", "-1"}), 2,
                      "--eps expects a positive number");
-  expectOneLineError(cli(dir, {"info"}), 2, "'info' needs an input .ddf file");
+  expectOneLineError(cli(dir, {"info"}), 2, "'info' needs an input .ddf, mesh or CAD file");
 }
 
 TEST(Cli, MissingOrCorruptInputGivesOneLineAndExitCode1) {
@@ -123,8 +123,8 @@ TEST(Cli, ConvertThenInfoJsonReportsTheGridNumbers) {
   test::ScratchDir dir;
   for (const char* input : {"bowl_patch.off", "bowl_patch_ascii.stl"}) {
     const auto ddfPath = (dir / "bowl.ddf").string();
-    const CliRun convert =
-        cli(dir, {"convert", dataFile(input), "-o", ddfPath, "--resolution", "5"});
+    const CliRun convert = cli(dir, {"convert", dataFile(input), "-o", ddfPath, "--resolution", "5",
+                                     "--support", "input"});
     ASSERT_EQ(convert.exitCode, 0) << convert.err;
     const CliRun info = cli(dir, {"info", ddfPath, "--json"});
     ASSERT_EQ(info.exitCode, 0) << info.err;
@@ -149,7 +149,8 @@ TEST(Cli, ConvertThenInfoJsonReportsTheGridNumbers) {
 TEST(Cli, ExtractWritesTheRasterMeshAndAnAdaptiveOne) {
   test::ScratchDir dir;
   const auto ddfPath = (dir / "bowl.ddf").string();
-  ASSERT_EQ(cli(dir, {"convert", dataFile("bowl_patch.off"), "-o", ddfPath, "--resolution", "5"})
+  ASSERT_EQ(cli(dir, {"convert", dataFile("bowl_patch.off"), "-o", ddfPath, "--resolution", "5",
+                      "--support", "input"})
                 .exitCode,
             0);
   const auto full = (dir / "full.obj").string();

@@ -68,9 +68,9 @@ TEST(DdfFileCorruption, HeaderProblemsAreNamed) {
   EXPECT_THAT(decodeError(magic), HasSubstr("not a .ddf file (wrong magic)"));
   EXPECT_THAT(decodeError("solid cube\n facet normal 0 0 1\n"), HasSubstr("wrong magic"));
   std::string newer = bytes;
-  putU32At(newer, 8, 2);
+  putU32At(newer, 8, 3);
   EXPECT_THAT(decodeError(resealed(newer)),
-              HasSubstr("unsupported .ddf format version 2: this build reads versions up to 1"));
+              HasSubstr("unsupported .ddf format version 3: this build reads versions up to 2"));
   std::string bigEndian = bytes;
   putU32At(bigEndian, 12, 0x04030201u);
   EXPECT_THAT(decodeError(resealed(bigEndian)), HasSubstr("big-endian"));

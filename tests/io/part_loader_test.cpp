@@ -78,8 +78,8 @@ TEST(PartLoader, ErrorsCarryTheFileAndTheCause) {
   const std::string message = test::ioErrorMessage([&] { loadPart(missing); });
   EXPECT_THAT(message, StartsWith("loading " + missing.string() + "\n"));
   EXPECT_THAT(message, HasSubstr("does not exist"));
-  EXPECT_THAT(test::ioErrorMessage([&] { loadPart(dir / "part.step"); }),
-              HasSubstr("expected .ddf, .stl, .obj, .ply or .off"));
+  EXPECT_THAT(test::ioErrorMessage([&] { loadPart(dir / "part.sat"); }),
+              HasSubstr("expected .ddf, .stl, .obj, .ply, .off, .step, .stp, .iges or .igs"));
   test::writeBytes(dir / "bad.ddf", "not a ddf");
   EXPECT_THAT(test::ioErrorMessage([&] { loadPart(dir / "bad.ddf"); }), HasSubstr("wrong magic"));
 }

@@ -7,6 +7,7 @@
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/mould_commands.h>
 #include <ddfcam/gui/mould_view.h>
+#include <ddfcam/io/mesh_units.h>
 #include <ddfcam/io/surface_file.h>
 #include <ddfcam/planning/surface_alignment.h>
 
@@ -14,6 +15,7 @@
 #include <QComboBox>
 #include <QFileDialog>
 #include <QGroupBox>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
@@ -21,6 +23,9 @@
 #include <QVBoxLayout>
 
 #include <memory>
+#include <utility>
+
+#include "unit_combo.h"
 
 namespace ddfcam::gui {
 namespace {
@@ -67,11 +72,17 @@ void MouldPanel::buildInputs() {
   auto* box = new QVBoxLayout(group);
   QPushButton* mould = button(group, tr("Load mould..."), "loadMouldButton");
   QPushButton* formed = button(group, tr("Load formed..."), "loadFormedButton");
+  mouldUnit_ = makeUnitCombo(group, "mouldUnitCombo");
+  formedUnit_ = makeUnitCombo(group, "formedUnitCombo");
   files_ = new QLabel(group);
   files_->setObjectName("mouldFilesLabel");
   files_->setWordWrap(true);
-  box->addWidget(mould);
-  box->addWidget(formed);
+  for (auto [load, unit] : {std::pair{mould, mouldUnit_}, std::pair{formed, formedUnit_}}) {
+    auto* row = new QHBoxLayout;
+    row->addWidget(load, 1);
+    row->addWidget(unit);
+    box->addLayout(row);
+  }
   box->addWidget(files_);
   layout()->addWidget(group);
   const QString filter = QString::fromStdString(io::surfaceFileDialogFilter());
@@ -132,7 +143,7 @@ bool MouldPanel::loadMould(const QString& path) {
   return runUserAction(workbench().reportError, tr("Load mould"), [&] {
     planning::MouldStudy study;
     if (const auto& old = workbench().document.project().mould) study.comparison = old->comparison;
-    study.mould = io::readSurfaceFile(path.toStdString());
+    study.mould = io::readSurfaceFileInUnit(path.toStdString(), unitOf(mouldUnit_));
     if (study.mould.mesh.triangles.empty())
       throw InvalidInput("the mould file '" + path.toStdString() + "' has no triangles");
     pushStudy(std::move(study), tr("Load mould"));
@@ -145,7 +156,7 @@ bool MouldPanel::loadFormed(const QString& path) {
     const auto& current = workbench().document.project().mould;
     if (!current) throw InvalidInput("load the mould first: it is the reference frame");
     planning::MouldStudy study = *current;
-    study.formed = io::readSurfaceFile(path.toStdString());
+    study.formed = io::readSurfaceFileInUnit(path.toStdString(), unitOf(formedUnit_));
     if (study.formed->mesh.triangles.empty())
       throw InvalidInput("the formed file '" + path.toStdString() + "' has no triangles");
     study.alignment = {};
@@ -153,6 +164,11 @@ bool MouldPanel::loadFormed(const QString& path) {
     pushStudy(std::move(study), tr("Load formed surface"));
     clearPointPairs();
   });
+}
+
+void MouldPanel::setSurfaceUnits(LengthUnit mould, LengthUnit formed) {
+  selectUnit(mouldUnit_, mould);
+  selectUnit(formedUnit_, formed);
 }
 
 void MouldPanel::setAlignmentMethod(planning::AlignmentMethod method) {

@@ -25,6 +25,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "unit_combo.h"
+
 namespace ddfcam::gui {
 namespace {
 
@@ -147,6 +149,7 @@ void MouldToolsPanel::buildCompensationButtons(QGroupBox* group, QBoxLayout* box
   start_ = button(group, tr("Start from target"), "startCompensationButton");
   calibrate_ = button(group, tr("Calibrate model"), "calibrateModelButton");
   import_ = button(group, tr("Import formed surface..."), "importFormedButton");
+  importUnit_ = makeUnitCombo(group, "importFormedUnitCombo");
   evaluate_ = button(group, tr("Evaluate last mould"), "evaluateMouldButton");
   step_ = button(group, tr("Step"), "compensationStepButton");
   export_ = button(group, tr("Export mould..."), "exportMouldButton");
@@ -154,6 +157,7 @@ void MouldToolsPanel::buildCompensationButtons(QGroupBox* group, QBoxLayout* box
   row1->addWidget(start_);
   row1->addWidget(calibrate_);
   row1->addWidget(import_);
+  row1->addWidget(importUnit_);
   auto* row2 = new QHBoxLayout;
   row2->addWidget(evaluate_);
   row2->addWidget(step_);
@@ -189,6 +193,10 @@ void MouldToolsPanel::connectCompensation() {
         askSavePath(tr("Export mould"), tr("STL (*.stl);;OBJ (*.obj);;PLY (*.ply)"));
     if (!path.isEmpty()) exportMould(row, path);
   });
+}
+
+void MouldToolsPanel::setFormedUnit(LengthUnit unit) {
+  selectUnit(importUnit_, unit);
 }
 
 void MouldToolsPanel::setResponseSource(ResponseSource source) {

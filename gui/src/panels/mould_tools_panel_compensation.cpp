@@ -9,14 +9,18 @@
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/mould_commands.h>
 #include <ddfcam/io/mesh_io.h>
+#include <ddfcam/io/mesh_units.h>
 #include <ddfcam/planning/project.h>
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFileInfo>
 
 #include <algorithm>
 #include <memory>
 #include <utility>
+
+#include "unit_combo.h"
 
 namespace ddfcam::gui {
 namespace {
@@ -92,11 +96,12 @@ bool MouldToolsPanel::importFormedSurface(const QString& path) {
     if (!history()) throw InvalidInput("start the compensation first");
     auto current = std::make_shared<const CompensationHistory>(*history());
     const std::string file = path.toStdString();
+    const LengthUnit unit = unitOf(importUnit_);
     const std::string name = QFileInfo(path).fileName().toStdString();
     Document* document = &workbench().document;
     const QString text = tr("Import formed surface %1").arg(QFileInfo(path).fileName());
     started = workbench().jobs.start(text, [=](const ProgressCallback& progress) {
-      const ddf::TriangleMesh formed = io::readMesh(file);
+      const ddf::TriangleMesh formed = io::readMeshInUnit(file, unit);
       ddf::DeformationSequenceParams params;
       params.progress = progress;
       auto next = std::make_shared<CompensationHistory>(*current);

@@ -24,7 +24,6 @@
 #include <QPixmap>
 #include <QPointer>
 #include <QPushButton>
-#include <QRegularExpression>
 #include <QScrollArea>
 #include <QSpinBox>
 #include <QTreeWidget>
@@ -35,19 +34,6 @@
 
 namespace ddfcam::gui {
 namespace {
-
-std::vector<double> parseRadii(const QString& text) {
-  std::vector<double> radii;
-  for (const QString& token : text.split(QRegularExpression("[,;\\s]+"), Qt::SkipEmptyParts)) {
-    bool ok = false;
-    const double r = token.toDouble(&ok);
-    if (!ok) throw InvalidInput("tool radii: '" + token.toStdString() + "' is not a number");
-    radii.push_back(r);
-  }
-  std::sort(radii.begin(), radii.end());
-  radii.erase(std::unique(radii.begin(), radii.end()), radii.end());
-  return radii;
-}
 
 QIcon swatch(const std::array<float, 3>& color) {
   QPixmap pixmap(14, 14);
@@ -100,6 +86,7 @@ SegmentationPanel::SegmentationPanel(Workbench& workbench, QWidget* parent)
           [this](const QString& message) { status_->setText(message); });
   connect(&workbench.document, &Document::changed, this, [this](Changes what) {
     if (what & (Change::Regions | Change::Part)) refreshList();
+    if (what & Change::Part) updateMethodControls();
     if (what & (Change::Regions | Change::Part | Change::Tools)) refreshPlan();
   });
   refreshList();
@@ -112,7 +99,7 @@ QWidget* SegmentationPanel::buildAutomaticGroup() {
   auto* group = new QGroupBox(tr("Automatic segmentation"), this);
   method_ = new QComboBox(group);
   method_->setObjectName("segmentationMethod");
-  method_->addItems({tr("by curvature type"), tr("by tool-radius classes")});
+  method_->addItems({tr("by curvature type"), tr("by tool-radius classes"), tr("by CAD face")});
   flatThreshold_ = new QDoubleSpinBox(group);
   flatThreshold_->setObjectName("segmentationFlatThreshold");
   flatThreshold_->setDecimals(5);
@@ -134,13 +121,8 @@ QWidget* SegmentationPanel::buildAutomaticGroup() {
   form->addRow(tr("Tool radii [mm]"), toolRadii_);
   form->addRow(tr("Min. region faces"), minFaces_);
   form->addRow(run);
-  const auto updateEnabled = [this] {
-    const bool byType = method_->currentIndex() == 0;
-    flatThreshold_->setEnabled(byType);
-    toolRadii_->setEnabled(!byType);
-  };
-  connect(method_, &QComboBox::currentIndexChanged, this, updateEnabled);
-  updateEnabled();
+  connect(method_, &QComboBox::currentIndexChanged, this, [this] { updateMethodControls(); });
+  updateMethodControls();
   connect(run, &QPushButton::clicked, this, [this] { segment(); });
   return group;
 }
@@ -223,40 +205,6 @@ void SegmentationPanel::setSegmentationOptions(SegmentationMethod method, double
   for (double r : toolRadiiMm) radii << QString::number(r);
   toolRadii_->setText(radii.join(", "));
   minFaces_->setValue(minFaces);
-}
-
-bool SegmentationPanel::segment() {
-  const auto& part = workbench().document.project().part;
-  if (!part) return false;
-  const bool byType =
-      method_->currentIndex() == static_cast<int>(SegmentationMethod::CurvatureType);
-  std::vector<double> radii;
-  if (!byType && !runUserAction(workbench().reportError, tr("Segment"),
-                                [&] { radii = parseRadii(toolRadii_->text()); }))
-    return false;
-  planning::SegmentationParams params;
-  params.type.flatCurvaturePerMm = flatThreshold_->value();
-  params.minFaces = minFaces_->value();
-  auto copy = std::make_shared<ddf::DisplacementField>(*part);
-  const QString title = byType ? tr("Segment by curvature type") : tr("Segment by tool radius");
-  QPointer<SegmentationPanel> self(this);
-  return workbench().jobs.start(title, [=](const ProgressCallback& progress) {
-    planning::CurvatureParams curvatureParams;
-    curvatureParams.progress = [&](double f) { return !progress || progress(0.7 * f); };
-    const planning::CurvatureField curvature = planning::computeCurvature(*copy, curvatureParams);
-    planning::SegmentationParams p = params;
-    p.progress = [&](double f) { return !progress || progress(0.7 + 0.3 * f); };
-    auto regions = std::make_shared<std::vector<planning::Region>>(
-        byType ? planning::segmentByCurvatureType(*copy, curvature, p)
-               : planning::segmentByToolRadius(*copy, curvature, radii, p));
-    return std::function<void()>([self, regions, title] {
-      if (!self) return;
-      Document& document = self->workbench().document;
-      document.push(std::make_unique<SetRegionsCommand>(document, title, std::move(*regions)));
-      self->status_->setText(tr("%1 regions").arg(document.project().regions.size()));
-      self->showColours_->setChecked(true);
-    });
-  });
 }
 
 std::vector<int> SegmentationPanel::selectedRegions() const {

@@ -12,6 +12,7 @@
 #include <ddfcam/ddf/vector_lengths.h>
 #include <ddfcam/progress.h>
 
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -55,15 +56,33 @@ struct ConversionParams {
   /// Reduced. Default Input.
   SupportChoice support = SupportChoice::Input;
   /// Constraints of the reduction (support == Reduced); its resolution and progress are set
-  /// by the conversion. Default: SupportReductionParams defaults.
+  /// by the conversion (the resolution to @ref resolution), and with toleranceMm > 0 also its
+  /// maxEdgeMm (the smaller of the one given, when > 0, and that of the tolerance tries).
+  /// Default: SupportReductionParams defaults.
   SupportReductionParams reduction;
-  /// Accuracy, mm: when > 0 the raster resolution is chosen (resolution is the first try)
-  /// so that the represented surface lies within this distance of the input, measured both
-  /// ways on sample points. Default 0 (resolution as given).
+  /// Accuracy, mm: when > 0 the raster spacing is chosen so that the represented surface lies
+  /// within this distance of the input, measured both ways on sample points
+  /// (ConversionAccuracy). With the input as support, resolution (or the spacing rule's m when
+  /// rasterSpacingMm > 0) is the first try and each further try refills the same support at
+  /// (m - 1) x 1.5 to 4 (from the measured ratio, as the chord error falls with the square of the
+  /// spacing), up to m = 256 and maxRasterPoints, stopping early when the distance no longer
+  /// shrinks. With a reduced support every try reduces the input again, so that the reduction
+  /// checks its stubbles at the m they are used at: support edges at most (m - 1) x a target
+  /// spacing d (first d = rasterSpacingMm, or the median input edge length), m = resolution
+  /// first; a miss raises m (up to 32, and within maxRasterPoints) and then shortens the edge
+  /// bound, at most 4 tries; the best try is returned. A tolerance not met is reported
+  /// (accuracy.note, a warning, naming the limit: the point budget, the tries, stubbles that miss
+  /// the input, or a distance that falls no faster than the spacing, i.e. a crease or sharp edge
+  /// inside a support face), not thrown. Default 0 (resolution as given).
   double toleranceMm = 0.0;
-  /// Target raster spacing, mm: when > 0 and toleranceMm is 0, the resolution is chosen so that
-  /// the raster spacing on the longest support edge is at most this. Default 0.
+  /// Target raster spacing, mm: when > 0 the resolution is the smallest m with
+  /// longest support edge / (m - 1) <= rasterSpacingMm (the first try when toleranceMm > 0).
+  /// Default 0.
   double rasterSpacingMm = 0.0;
+  /// Largest number of stored heights (faces x m (m + 1) / 2) the spacing rule and the
+  /// tolerance tries may give the field (4 bytes each, and about ten times that while the
+  /// distances are measured). Default 20,000,000.
+  std::size_t maxRasterPoints = 20'000'000;
   /// Stock allowance the crust must reach above the surface, mm (0 = none): support offsets
   /// and vector lengths are fitted by fitCrustToStock. Default 0.
   double stockMm = 0.0;
@@ -75,30 +94,29 @@ struct ConversionParams {
   ProgressCallback progress;
 };
 
-/// @brief How well the represented surface follows the input (measured on sample points).
-struct ConversionAccuracy {
-  bool measured = false;         ///< the distances below were measured
-  double inputToDdfMm = 0.0;     ///< largest distance of an input sample to the DDF surface
-  double ddfToInputMm = 0.0;     ///< largest distance of a DDF raster point to the input
-  double rasterSpacingMm = 0.0;  ///< longest raster spacing (longest support edge / (m - 1))
-  int resolutionTries = 0;       ///< resolutions tried to meet toleranceMm
-};
-
 /// @brief The converted DDF and what the conversion had to give up.
 struct ConversionResult {
-  DisplacementField ddf;  ///< support = the welded input mesh, heights by fill
+  /// Support = the welded input mesh (Input) or its reduction (Reduced), heights by fill.
+  DisplacementField ddf;
   /// Counts of every repair and drop, the input's topology and the check of the result.
   ConversionReport report;
-  std::vector<int> sourceTriangle;      ///< per DDF face, the index of its input triangle
-  std::vector<int> repairedVertices;    ///< DDF vertices whose direction left the pseudo-normal
-  std::vector<int> infeasibleVertices;  ///< DDF vertices with no front-facing direction
-  VectorLengthReport lengths;           ///< report of the vector length choice
-  std::size_t filledPoints = 0;         ///< stored heights set from the input mesh by fill
-  std::size_t unfilledPoints = 0;       ///< stored heights whose stubble missed it (kept at 0)
-  std::vector<int> supportLabels;       ///< per DDF face, its input label (empty without labels)
-  SupportReductionReport reduction;     ///< what the reduction did (support == Reduced)
-  ConversionAccuracy accuracy;          ///< distances to the input (toleranceMm or spacing set)
-  std::optional<StockFit> stock;        ///< the crust fit to stockMm (when stockMm > 0)
+  /// Per DDF face, the index of its input triangle; empty for a reduced support, whose faces
+  /// stand for many input triangles (supportLabels then says which labelled region each is in).
+  std::vector<int> sourceTriangle;
+  /// DDF vertices whose direction left the pseudo-normal (empty for a reduced support: the
+  /// indices would name vertices of the unreduced one; report.repairedDirections counts them).
+  std::vector<int> repairedVertices;
+  /// DDF vertices with no front-facing direction (empty for a reduced support, as above).
+  std::vector<int> infeasibleVertices;
+  VectorLengthReport lengths;        ///< report of the vector length choice
+  std::size_t filledPoints = 0;      ///< stored heights set from the input mesh by fill
+  std::size_t unfilledPoints = 0;    ///< stored heights whose stubble missed it (kept at 0)
+  std::vector<int> supportLabels;    ///< per DDF face, its input label (empty without labels)
+  SupportReductionReport reduction;  ///< what the reduction did (support == Reduced)
+  /// Distances to the input, measured when toleranceMm or rasterSpacingMm is set or the support
+  /// is Reduced (a copy is in report.accuracy).
+  ConversionAccuracy accuracy;
+  std::optional<StockFit> stock;  ///< the crust fit to stockMm (when stockMm > 0; in report too)
 };
 
 /// @brief Converts @p mesh into a DDF whose support is the mesh itself (the baseline of ch. 6).
@@ -115,8 +133,14 @@ struct ConversionResult {
 /// rounding (one-sided Hausdorff distance checked in the tests). A result that still violates a
 /// constraint is returned, not thrown: report.valid() is false and report.validation and
 /// conversionProblemLines() say where and why; the caller decides whether to use it.
-/// @throws InvalidInput for a bad resolution, an index out of range, or when no triangle
-/// survives. @throws Cancelled through params.progress.
+/// With support == Reduced the welded support is reduced by reduceSupport() (labels carried
+/// through welding and dropping) before the lengths are chosen; with toleranceMm or
+/// rasterSpacingMm the resolution is chosen as documented there; with stockMm the crust is
+/// fitted by fitCrustToStock() after the fill (and the distances measured again).
+/// @throws InvalidInput for a bad resolution, an index out of range, inputLabels of the wrong
+/// size, a negative or non-finite tolerance, spacing or stock, a spacing that needs more than
+/// m = 256 or maxRasterPoints, or when no triangle survives. @throws Cancelled through
+/// params.progress.
 ConversionResult convertMeshToDdf(const TriangleMesh& mesh, const ConversionParams& params = {});
 
 }  // namespace ddfcam::ddf

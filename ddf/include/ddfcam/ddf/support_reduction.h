@@ -35,6 +35,11 @@ struct SupportReductionParams {
   bool requireAngleBound = true;
   /// The angle bound, degrees. Default 45.
   double maxAngleDeg = 45.0;
+  /// Feature edges: an input edge whose two faces' normals differ by more than this angle,
+  /// degrees, is kept like a boundary edge (its vertices are never moved), so no support face
+  /// spans a sharp edge, which a raster can only cut at a distance proportional to its
+  /// spacing. 180 switches it off (the dissertation's runs). Default 40.
+  double featureAngleDeg = 40.0;
   /// Longest support edge the reduction may create, mm (0 = no limit). Default 0.
   double maxEdgeMm = 0.0;
   /// Longest displacement vector, mm (0 = no limit). Default 0.
@@ -73,13 +78,55 @@ struct SupportReductionResult {
 /// @brief Reduces the support @p input (a manifold mesh, usually the welded input surface
 /// F_d itself) by shortest-feasible-edge-first contraction (sec. 6.1) under the constraints of
 /// sec. 6.2 switched on in @p params; the items are the faces of @p input.
+///
+/// Sweeps: the edges are sorted by length and tried in order; edges that become incident to a
+/// new vertex wait for the next sweep, which sorts the remaining edges again; the reduction ends
+/// after a sweep without contraction or after maxSweeps. An edge refused earlier is not tried
+/// again while no face around it has changed. A tentative contraction of edge (a, b) is checked
+/// in this order, the first failure counted in the report:
+/// - boundary: a or b lies on the mesh boundary or between faces of different labels (so the
+///   boundary and the label borders are kept exactly, vertex for vertex);
+/// - critical: the edge lies on a 3-cycle that is no face, the two apexes and the edge span a
+///   tetrahedron, OpenMesh's link test refuses it, or a remaining face would flip its normal or
+///   degenerate at the new vertex (always on);
+/// - edge length (maxEdgeMm);
+/// - unique projection, part 1: the new vertex is the midpoint moved along the averaged vector
+///   (v_a + v_b)/2 onto the nearest item of the region within |h| <= 1 (the plain midpoint when
+///   the moved one folds a face); its vector keeps the averaged direction and gets the longest
+///   length L <= cap for which every modified face has h0 >= 1 (sec. 4.4), then 0.8 L when that
+///   still holds; cap = maxVectorLengthMm, or the longest new edge when that is 0; refused when
+///   no length works. Without requireUniqueProjection the vector is the plain average;
+/// - the items of the modified faces (and of their neighbours, neighbourCandidates) are
+///   re-assigned by V-shooting the new faces' rasters (resolution m) at them; every ray keeps
+///   its nearest hit within |h| <= 1; ray coverage (b), then the angle bound, then input
+///   coverage (a) by per-item hit counters (an item whose counter was positive must not drop
+///   to 0; items never hit at the start, e.g. at m <= 3, are not held to it);
+/// - containment: every vertex of a re-assigned item that V-projects onto a new face with mu
+///   inside lies at |h| <= 1 there or in the crust of another face of the region;
+/// - unique projection, part 2: the +-1 crust of no new face meets the crust of a face sharing
+///   no vertex with it (crust boxes in a spatial hash, exact test crustsIntersect); on such a
+///   conflict the length choice is repeated with half and a quarter of the cap.
+///
+/// With requireUniqueProjection the input's directions first get lengths by
+/// chooseVectorLengths (sec. 4.4, safety 0.8, maxLengthMm = maxVectorLengthMm), so that the
+/// start satisfies constraint 3 too. Every contraction then keeps h0 >= 1 on the faces it
+/// modifies and their crusts clear of non-adjacent ones, so the returned vectors already satisfy
+/// constraint 3 (validate() passes where the input's start did) and they are the lengths the
+/// coverage and containment checks were made with: a caller must NOT re-run
+/// chooseVectorLengths on them (it would renormalise and re-choose every length and undo
+/// what the constraints verified); validate and fill the heights (fillFromMesh) directly.
+/// Without requireUniqueProjection the vectors are averages of the given ones and constraint 3
+/// is not guaranteed.
 /// @param input the input surface as support mesh, mm.
 /// @param vectors #V unit or scaled pseudo-normal directions of @p input (constraint 1 holds).
 /// @param inputLabels empty, or one label per face of @p input (e.g. its CAD face): an edge
 /// whose contraction would merge faces of different labels is not contracted, so every
 /// reduced face carries one label.
-/// @throws InvalidInput on a size mismatch or a bad parameter. @throws Cancelled through
-/// params.progress.
+/// @return the reduced support (a fresh, garbage-free mesh: surviving vertices and faces in
+/// their old order), #V vectors (mm), per-face labels (empty without @p inputLabels) and the
+/// report. The support is manifold with no degenerate face.
+/// @throws InvalidInput on a size mismatch, a zero or non-finite vector or a bad parameter.
+/// @throws Cancelled through params.progress.
 SupportReductionResult reduceSupport(const SupportMesh& input, std::span<const Vec3> vectors,
                                      std::span<const int> inputLabels = {},
                                      const SupportReductionParams& params = {});

@@ -6,6 +6,7 @@
 #include <ddfcam/ddf/surface_sampling.h>
 #include <ddfcam/gui/adapters/colour_map.h>
 #include <ddfcam/gui/document.h>
+#include <ddfcam/gui/part_facts.h>
 #include <ddfcam/gui/part_geometry.h>
 #include <ddfcam/planning/error_map.h>
 #include <ddfcam/planning/tool.h>
@@ -58,7 +59,11 @@ class PartView : public QObject {
   VtkView& view() const { return view_; }
   /// @brief Geometry of the shown part, or null if the document has no part.
   const PartGeometry* geometry() const { return geometry_.get(); }
-  /// @brief One-line summary for the status bar: name, faces, m, points, surface triangles.
+  /// @brief Size, raster spacing and crust reach of the shown part (recomputed with the
+  /// geometry), or null if the document has no part.
+  const PartFacts* facts() const { return facts_ ? &*facts_ : nullptr; }
+  /// @brief One-line summary for the status bar: name, size in mm, "support N faces, m = ..,
+  /// spacing .. mm", points, surface triangles.
   std::string summary() const;
 
   /// @brief Colours the surface by the field named @p name (empty: none), auto range.
@@ -86,6 +91,14 @@ class PartView : public QObject {
   void setVectorGlyphsVisible(bool visible);
   /// @brief Shows or hides the tool-path overlay.
   void setPathsVisible(bool visible);
+  /// @brief Name of the overlay of the crust's offset surface on side @p side (+1: h = +1,
+  /// -1: h = -1): "crust+1" or "crust-1".
+  static std::string crustOverlayName(int side);
+  /// @brief Shows or hides the crust's offset surface h = @p side (+1 or -1) as a translucent
+  /// overlay (adapters/crust_surface.h), rebuilt when the part changes.
+  /// @throws InvalidInput unless side is +1 or -1.
+  void setCrustVisible(int side, bool visible);
+  bool isCrustVisible(int side) const;
 
   /// @brief The surface point under widget position @p pos, or nullopt if the surface is not
   /// hit there. Marks the point with an arrow along its stubble (overlay "pick") and emits
@@ -106,6 +119,7 @@ class PartView : public QObject {
   void applyFieldDisplay();
   void rebuildPathOverlay();
   void rebuildGlyphOverlay();
+  void rebuildCrustOverlay(int side);
   void showPickMarker(const ddf::SurfaceLocation& location);
 
   Document& document_;
@@ -113,9 +127,11 @@ class PartView : public QObject {
   DisplayParams params_;
   std::unique_ptr<PartScene> scene_;
   std::unique_ptr<PartGeometry> geometry_;
+  std::optional<PartFacts> facts_;
   FieldDisplay display_;
   bool pathsVisible_ = true;
   bool glyphsVisible_ = false;
+  bool crustVisible_[2] = {false, false};  ///< h = +1, h = -1
 };
 
 }  // namespace ddfcam::gui

@@ -3,7 +3,9 @@
 // the unsaved-changes prompt and crash recovery.
 #pragma once
 
+#include <ddfcam/gui/part_import_dialog.h>
 #include <ddfcam/gui/user_action.h>
+#include <ddfcam/io/part_loader.h>
 
 #include <QObject>
 #include <QSize>
@@ -11,6 +13,7 @@
 #include <QStringList>
 
 #include <functional>
+#include <memory>
 #include <optional>
 
 namespace ddfcam::planning {
@@ -68,6 +71,14 @@ struct WorkbenchDialogs {
   std::function<std::optional<PathImportOptions>(const PathImportRequest& request,
                                                  const PathImportOptions& initial)>
       importPath;
+  /// Asks how to import the mesh or CAD part @p request (unit, accuracy, support, stock),
+  /// starting from @p initial; nullopt means cancelled.
+  std::function<std::optional<PartImportChoices>(const PartImportRequest& request,
+                                                 const PartImportChoices& initial)>
+      importPart;
+  /// Tells that the crust cannot hold the requested stock (@p message: where and why) and
+  /// offers to import again with the largest allowance it holds, @p largestMm; true: re-import.
+  std::function<bool(const QString& message, double largestMm)> offerLargestStock;
 };
 
 /// @brief File operations on a Document. Loading runs as a job (a big mesh converts for a
@@ -85,10 +96,20 @@ class ProjectActions : public QObject {
   /// @brief True if @p path names a file the workbench can open (project, .ddf or mesh).
   static bool canOpen(const QString& path);
 
-  /// @brief Starts opening @p path: a project replaces the document, a .ddf or mesh starts a
-  /// new project on it (the mesh also becomes the design mesh). Asks about unsaved changes
-  /// first. @return true if the load job started.
+  /// @brief Starts opening @p path: a project replaces the document, a .ddf, mesh or CAD file
+  /// starts a new project on it (the mesh or tessellation also becomes the design mesh). Asks
+  /// about unsaved changes first, then, for a mesh or CAD file, how to import it
+  /// (WorkbenchDialogs::importPart; the session's last choices start the next dialog).
+  /// @return true if the load job started.
   bool openPath(const QString& path);
+  /// @brief Starts importing the mesh or CAD file @p path with @p choices, no dialog (e.g. again
+  /// with the largest stock the crust holds). @return true if the load job started.
+  bool importPart(const QString& path, const PartImportChoices& choices);
+  /// @brief The session's last import choices (the defaults before the first import).
+  const PartImportChoices& recentImportChoices() const { return recentChoices_; }
+  /// @brief What loading the document's part did, when it was imported from a mesh or CAD file
+  /// in this session (nullopt after opening a project, a .ddf, the demo or a new project).
+  const std::optional<io::LoadPartReport>& partReport() const { return partReport_; }
   /// @brief Replaces the document by an empty project (asks about unsaved changes first).
   /// @return true if done.
   bool newProject();
@@ -113,10 +134,18 @@ class ProjectActions : public QObject {
   /// @p verdict is "<file>: valid DDF ..." or "<file>: INVALID DDF: violates constraint ...",
   /// the same words `ddfcam-cli convert` prints; the repairs and problems went to the log.
   void conversionReported(const QString& verdict, bool valid);
+  /// @brief partReport() changed (after opened()).
+  void partReportChanged();
 
  private:
-  bool startLoad(const QString& title, const QString& path,
-                 std::function<void(const QString&)> onLoaded);
+  /// Runs on the UI thread after a load replaced the document: the path and the load's report.
+  using LoadedStep = std::function<void(const QString&, std::shared_ptr<io::LoadPartReport>)>;
+  bool startLoad(const QString& title, const QString& path, io::LoadPartParams params,
+                 LoadedStep onLoaded);
+  /// After an import: keeps the report, and when the stock was not held says so and offers the
+  /// largest allowance.
+  void takePartReport(const QString& path, std::shared_ptr<io::LoadPartReport> report,
+                      const PartImportChoices& choices);
   /// Logs what converting @p path did (repairs at Info, problems at Warning) and emits
   /// conversionReported().
   void announceConversion(const QString& path, const ddf::ConversionReport& report);
@@ -125,6 +154,8 @@ class ProjectActions : public QObject {
   JobRunner& jobs_;
   RecentFiles& recent_;
   const WorkbenchDialogs& dialogs_;
+  PartImportChoices recentChoices_;
+  std::optional<io::LoadPartReport> partReport_;
 };
 
 }  // namespace ddfcam::gui

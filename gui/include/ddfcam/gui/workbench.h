@@ -18,18 +18,21 @@ class JobRunner;
 class MouldView;
 class PartView;
 class PlotDock;
+class ProjectActions;
 
 /// @brief The shell's services, handed to every panel: the document to read and edit (through
 /// commands), the job runner for long work, the 3D part view (field display, overlays, picks),
 /// the plot dock, the console and the error reporter of user actions.
 struct Workbench {
-  Document& document;         ///< the session's project and undo stack
-  JobRunner& jobs;            ///< runs long work off the UI thread
-  PartView& partView;         ///< 3D view of the part: fields, overlays, picking
-  PlotDock& plots;            ///< histogram and line plots
-  ConsoleDock& console;       ///< message log
-  ErrorReporter reportError;  ///< shows an error of a user action (dialog + console)
+  Document& document;              ///< the session's project and undo stack
+  JobRunner& jobs;                 ///< runs long work off the UI thread
+  PartView& partView;              ///< 3D view of the part: fields, overlays, picking
+  PlotDock& plots;                 ///< histogram and line plots
+  ConsoleDock& console;            ///< message log
+  ErrorReporter reportError;       ///< shows an error of a user action (dialog + console)
   MouldView* mouldView = nullptr;  ///< the "Mould" tab's views (mould and formed surfaces)
+  /// File operations; partReport() says how the document's part was imported (may be null).
+  ProjectActions* projectActions = nullptr;
 };
 
 /// @brief A workflow panel: a widget the main window puts in a dock, plus optional actions it

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <ddfcam/ddf/support_mesh.h>
+#include <ddfcam/length_unit.h>
 #include <ddfcam/planning/path_linking.h>
 
 #include <optional>
@@ -12,19 +13,11 @@
 
 namespace ddfcam::io {
 
-/// @brief Length unit of a path file. Programs hold millimetres; readers convert, writers
-/// convert back.
-enum class LengthUnit {
-  Millimetre,  ///< mm (feeds in mm/min)
-  Inch,        ///< inch (feeds in inch/min)
-  Metre        ///< m, as robot frameworks write (feeds in m/min)
-};
-
-/// @brief Millimetres in one @p unit: 1, 25.4 or 1000.
-double millimetresPer(LengthUnit unit);
-
-/// @brief Short name of @p unit as written in headers and messages: "mm", "in" or "m".
-std::string_view lengthUnitName(LengthUnit unit);
+/// @brief Length unit of a path file: the one unit type of ddfcam (programs hold millimetres;
+/// readers convert, writers convert back; feeds are in the unit per minute).
+using LengthUnit = ::ddfcam::LengthUnit;
+using ::ddfcam::millimetresPer;
+using ::ddfcam::unitSymbol;
 
 /// @brief Which point of the tool a program's positions give.
 enum class ClPointKind {

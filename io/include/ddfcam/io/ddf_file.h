@@ -3,16 +3,34 @@
 #pragma once
 
 #include <ddfcam/ddf/displacement_field.h>
+#include <ddfcam/length_unit.h>
 
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace ddfcam::io {
 
-/// @brief Format version this build writes and the newest it reads.
-inline constexpr std::uint32_t kDdfFormatVersion = 1;
+/// @brief Newest format version this build writes and reads. A field without metadata is
+/// written as version 1 (so older builds read it); with metadata as version 2.
+inline constexpr std::uint32_t kDdfFormatVersion = 2;
+
+/// @brief Where a field came from, stored in the optional metadata section of a version-2
+/// .ddf file. The field itself is always in mm.
+struct DdfMetadata {
+  /// Unit the source file of the part was read in. Default mm.
+  ddfcam::LengthUnit sourceUnit = ddfcam::LengthUnit::Millimetre;
+  /// Empty, or per support face the CAD face it came from (-1: none), an index into
+  /// cadFaceNames. Default empty.
+  std::vector<int> cadFaceOfSupportFace;
+  /// Display names of the CAD faces, e.g. "face 12 (B-spline)". Default empty.
+  std::vector<std::string> cadFaceNames;
+  /// Set by decodeDdf/readDdf: whether the file held a metadata section (version 2); when
+  /// false the other members keep their defaults. Ignored when writing.
+  bool stored = false;
+};
 
 /// @brief Serialises @p field in the .ddf format (format version kDdfFormatVersion).
 ///
@@ -31,24 +49,45 @@ inline constexpr std::uint32_t kDdfFormatVersion = 1;
 /// | | 12 F | faces, u32 p1 p2 p3 in the field's local order faceVertices(f) |
 /// | | 4 F m(m+1)/2 | heights, f32, face after face in Raster order |
 /// | end-4 | 4 | u32 CRC-32 (IEEE, zlib) of every byte before it |
-/// @return the file content.
+///
+/// Version 2 (written when metadata is given) has the same layout with the metadata section
+/// between the heights and the checksum: u32 byte count L, then L bytes: u32 source unit (0 mm,
+/// 1 cm, 2 m, 3 in), u32 N CAD face names, each a u32 byte count and UTF-8 bytes, u64 K (0 or
+/// F) and K i32 CAD faces of the support faces (-1 or < N). A reader ignores bytes of the
+/// section after the members it knows, so later members extend it without a version bump.
+/// @return the file content (version 1).
 std::string encodeDdf(const ddf::DisplacementField& field);
+
+/// @brief Serialises @p field with @p metadata (format version 2, see above).
+/// @throws InvalidInput if cadFaceOfSupportFace is neither empty nor one entry per face, or
+/// holds an entry outside [-1, cadFaceNames.size()).
+std::string encodeDdf(const ddf::DisplacementField& field, const DdfMetadata& metadata);
 
 /// @brief Writes @p field to @p path in the .ddf format, atomically (temporary file + rename).
 /// @throws IoError if the file cannot be written; the target is then left unchanged.
 void writeDdf(const ddf::DisplacementField& field, const std::filesystem::path& path);
 
-/// @brief Rebuilds a field from .ddf content; the exact inverse of encodeDdf (positions,
-/// vectors, face vertex order and heights are bit-identical).
+/// @brief Writes @p field with @p metadata (format version 2), as writeDdf above.
+/// @throws InvalidInput as encodeDdf with metadata (the target is not touched); IoError as
+/// writeDdf.
+void writeDdf(const ddf::DisplacementField& field, const std::filesystem::path& path,
+              const DdfMetadata& metadata);
+
+/// @brief Rebuilds a field from .ddf content (version 1 or 2); the exact inverse of encodeDdf
+/// (positions, vectors, face vertex order and heights are bit-identical).
 /// @param bytes whole file content; @param sourceName file name used in messages.
+/// @param metadata if not null, receives the metadata section (defaults, stored = false, for
+/// a version-1 file).
 /// @throws IoError if the content is empty, truncated, has trailing bytes, a wrong magic, a
 /// newer or invalid version, a foreign byte order, a checksum mismatch, or describes an invalid
 /// field (index out of range, non-finite position, non-manifold support); the message names
-/// @p sourceName and what is wrong.
-ddf::DisplacementField decodeDdf(std::string_view bytes, const std::string& sourceName);
+/// @p sourceName and what is wrong (also a malformed metadata section).
+ddf::DisplacementField decodeDdf(std::string_view bytes, const std::string& sourceName,
+                                 DdfMetadata* metadata = nullptr);
 
 /// @brief Reads a .ddf file written by writeDdf.
+/// @param metadata if not null, receives the metadata as decodeDdf.
 /// @throws IoError if the file is missing or unreadable, or as decodeDdf.
-ddf::DisplacementField readDdf(const std::filesystem::path& path);
+ddf::DisplacementField readDdf(const std::filesystem::path& path, DdfMetadata* metadata = nullptr);
 
 }  // namespace ddfcam::io

@@ -56,15 +56,46 @@ struct LoadPartReport {
   std::vector<std::string> cadHealing;
 };
 
-/// @brief Loads @p path as a DDF: a .ddf file through readDdf, a .stl/.obj/.ply/.off mesh
-/// through readMesh and ddf::convertMeshToDdf (the mesh becomes the support, heights 0).
-/// A converted field that violates a DDF constraint is still returned (with a warning through
-/// ddfcam::log); report->conversion says which constraint fails and where.
+/// @brief Loads @p path as a DDF: a .ddf file through readDdf; a .stl/.obj/.ply/.off mesh
+/// through readMesh, scaled by millimetresPer(params.unit, default mm), and
+/// ddf::convertMeshToDdf; a .step/.stp/.iges/.igs CAD model through readCadModel (in the unit
+/// the file states unless params.unit overrides it), tessellated with the chord deflection of
+/// cadChordDeflectionMm() and converted with its CAD face per triangle as
+/// ConversionParams::inputLabels (report->cadFaceOfSupportFace maps the result back).
+/// When no unit was given and the file states none the part is read as mm; the report's
+/// fileDiagonal tells the caller whether sizeSuggestsOtherUnit() holds, so that the CLI warns
+/// (naming --units) and the import dialog asks, each once. A .ddf file's recorded source unit
+/// and CAD faces are copied into the report. A converted field that violates a DDF constraint is
+/// still returned (with a warning through ddfcam::log); report->conversion says which constraint
+/// fails and where.
 /// @param report if not null, receives what the conversion did.
-/// @throws IoError "loading <file>" with the cause nested (missing or malformed file, unknown
-/// extension, a mesh the conversion rejects); Cancelled (not wrapped) through params.progress.
+/// @throws IoError "loading <file>" with the cause nested (missing, empty or malformed file,
+/// unknown extension, a CAD file without faces, a mesh the conversion rejects); Cancelled (not
+/// wrapped) through params.progress.
 ddf::DisplacementField loadPart(const std::filesystem::path& path,
                                 const LoadPartParams& params = {},
                                 LoadPartReport* report = nullptr);
+
+/// @brief A loaded part and the triangles it was converted from.
+struct LoadedPart {
+  ddf::DisplacementField ddf;  ///< the part, mm
+  /// The input triangles in mm: the scaled mesh file or the CAD tessellation (empty for .ddf).
+  ddf::TriangleMesh inputMesh;
+};
+
+/// @brief loadPart() that also returns the converted triangles (openProject keeps them as the
+/// design mesh, so a CAD model is read and tessellated once).
+/// @throws as loadPart().
+LoadedPart loadPartWithInput(const std::filesystem::path& path, const LoadPartParams& params = {},
+                             LoadPartReport* report = nullptr);
+
+/// @brief Chord deflection loadPart() tessellates a CAD model with, mm: a tenth of
+/// conversion.toleranceMm when that is set (the tessellation takes a tenth of the accuracy
+/// budget); otherwise a tenth of the raster spacing estimate, which is
+/// conversion.rasterSpacingMm when set, else that of a support edge of 1 % of the part's
+/// diagonal at the conversion's resolution, 0.01 * diagonalMm / (resolution - 1). Never below
+/// 1e-7 * diagonalMm.
+/// @param diagonalMm bounding-box diagonal of the model, mm.
+double cadChordDeflectionMm(const ddf::ConversionParams& conversion, double diagonalMm);
 
 }  // namespace ddfcam::io

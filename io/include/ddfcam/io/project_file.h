@@ -65,6 +65,17 @@ struct ProjectReadReport {
 /// | "SURF" | per surface | string name, then to the payload's end the .ddf encoding |
 /// | "MOLD" | 0..1 | the mould study (planning::MouldStudy, from version 4 on), below |
 ///
+/// Optional chunk of this build (lower-case, so older builds skip it with a warning):
+/// | tag | count | payload |
+/// |---|---|---|
+/// | "prov" | 0..1 | where the part came from, below |
+///
+/// "prov": i32 source unit (0 mm, 1 cm, 2 m, 3 in), u64 N, N strings (the CAD face names),
+/// u64 F, F i32 (per support face of the part its CAD face, -1 or < N; F is 0 or the part's
+/// face count). It is written only for a part read in a unit other than mm or with CAD faces, so
+/// other projects are saved as before; without it a project loads with sourceUnit mm and no CAD
+/// faces. A reader ignores bytes after the members it knows (later members extend it).
+///
 /// The S i32 of a path are its passStarts, the feed is feedMmPerMin (mm/min), kind is the
 /// ToolKind value.
 ///

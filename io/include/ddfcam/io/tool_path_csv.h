@@ -38,7 +38,7 @@ struct CsvReadParams {
 
 /// @brief The header line (without line end): "path,point,P_x_U,P_y_U,P_z_U,axis_i,axis_j,
 /// axis_k,normal_x,normal_y,normal_z,feed_U_per_min,move" with P = "contact" or "tool" and
-/// U = lengthUnitName(@p unit) ("mm", "in", "m").
+/// U = unitSymbol(@p unit) ("mm", "in", "m").
 std::string toolPathCsvHeader(ClPointKind kind, LengthUnit unit = LengthUnit::Millimetre);
 
 /// @brief The CSV text of @p program: the header, then one line per point, each ending in

@@ -16,15 +16,16 @@ namespace ddfcam::planning {
 
 /// @brief The goal @p goal with every height raised so that the represented surface moves by
 /// @p allowanceMm along its unit surface normal n: dh = allowance / (v . n) per raster point.
-/// n is the normal of the goal's raster surface at the point (cross product of the central
-/// differences of the surface points along the two raster directions of the face, one-sided
-/// on the face border), oriented to the side of v. Shared copies are made equal afterwards
+/// n is the normal of the goal's raster surface at the point (ddf::rasterNormal: area-weighted
+/// normal of the raster triangles around it), oriented to the side of v; ddf::crustReach
+/// measures the room for it along the same normal. Shared copies are made equal afterwards
 /// (SharedPolicy::Canonical). Support and vectors are those of @p goal, so produced and desired
 /// surfaces can be compared height by height (sec. 8.4.1).
 /// @param allowanceMm stock thickness along the normal, mm; may be 0 or negative (undersize).
 /// @throws InvalidInput when a raised height leaves the crust [-1, 1] or v . n <= 0 at a
 /// point; the message names the allowance, the face and raster point, and the room left in
-/// the crust there in mm along the normal.
+/// the crust there in mm along the normal, and says to convert the part with a stock allowance
+/// (ddf::fitCrustToStock through ConversionParams::stockMm) so that the crust holds it.
 ddf::DisplacementField workpieceWithAllowance(const ddf::DisplacementField& goal,
                                               double allowanceMm);
 

@@ -5,6 +5,7 @@
 
 #include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/gui/workbench.h>
+#include <ddfcam/length_unit.h>
 #include <ddfcam/planning/error_map.h>
 #include <ddfcam/planning/mould_study.h>
 
@@ -67,11 +68,15 @@ class MouldPanel : public Panel {
   /// @brief Replaces the file dialogs (tests). Default: QFileDialog.
   void setPathProvider(PathProvider provider) { askPath_ = std::move(provider); }
 
-  /// @brief Loads the mould surface from @p path (one undoable edit; drops formed-side results
-  /// that referred to the old mould). Errors are reported. @return true if loaded.
+  /// @brief Units the next loadMould() and loadFormed() read their files in (the unit combos
+  /// next to the buttons; default mm); the meshes are scaled to mm.
+  void setSurfaceUnits(LengthUnit mould, LengthUnit formed);
+  /// @brief Loads the mould surface from @p path in the mould unit (one undoable edit; drops
+  /// formed-side results that referred to the old mould). Errors are reported.
+  /// @return true if loaded.
   bool loadMould(const QString& path);
-  /// @brief Loads the formed surface from @p path as positioned (alignment None). Needs a
-  /// mould. @return true if loaded.
+  /// @brief Loads the formed surface from @p path in the formed unit, as positioned (alignment
+  /// None). Needs a mould. @return true if loaded.
   bool loadFormed(const QString& path);
 
   /// @brief Chooses the alignment method of the next applyAlignment().
@@ -160,6 +165,8 @@ class MouldPanel : public Panel {
   bool morphShown_ = false;
 
   QComboBox* alignment_ = nullptr;
+  QComboBox* mouldUnit_ = nullptr;
+  QComboBox* formedUnit_ = nullptr;
   QListWidget* pairList_ = nullptr;
   QLabel* alignmentLabel_ = nullptr;
   QSpinBox* resolution_ = nullptr;

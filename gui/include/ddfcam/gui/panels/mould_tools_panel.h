@@ -7,6 +7,7 @@
 #include <ddfcam/ddf/shared_support_shapes.h>
 #include <ddfcam/ddf/triangle_mesh.h>
 #include <ddfcam/gui/workbench.h>
+#include <ddfcam/length_unit.h>
 #include <ddfcam/planning/blend_function.h>
 #include <ddfcam/planning/springback_compensation.h>
 
@@ -146,6 +147,9 @@ class MouldToolsPanel : public Panel {
   /// @brief Reads @p path (STL/OBJ/PLY) as the part formed in the last mould and records it as
   /// that mould's response (job, one undo step). @return true if the job started.
   bool importFormedSurface(const QString& path);
+  /// @brief Unit importFormedSurface() reads its file in (the combo next to the button; default
+  /// mm); the mesh is scaled to mm.
+  void setFormedUnit(LengthUnit unit);
   /// @brief Records the response of the last mould from the linear model, if it has none (one
   /// undo step; no new mould). @return true if the job started.
   bool evaluateLastMould();
@@ -195,6 +199,7 @@ class MouldToolsPanel : public Panel {
   QPushButton* start_ = nullptr;
   QPushButton* calibrate_ = nullptr;
   QPushButton* import_ = nullptr;
+  QComboBox* importUnit_ = nullptr;
   QPushButton* evaluate_ = nullptr;
   QPushButton* step_ = nullptr;
   QPushButton* export_ = nullptr;

@@ -8,8 +8,11 @@ class QLabel;
 
 namespace ddfcam::gui {
 
-/// @brief Shows the part (name, source, support faces, m, raster points, memory, height range,
-/// displayed surface) and the counts of fields, regions, tools, paths, states and surfaces.
+/// @brief Shows the part (name, source, the unit it came in, size in mm, support faces, m and
+/// raster spacing, crust reach above and below, CAD faces, and for a part imported in this
+/// session the reduction, the both-way distances to the input and the stock verdict; raster
+/// points, memory, height range, displayed surface) and the counts of fields, regions, tools,
+/// paths, states and surfaces.
 class PartPanel : public Panel {
   Q_OBJECT
 

@@ -29,11 +29,13 @@ class RegionPlanEditor;
 enum class SegmentationMethod {
   CurvatureType = 0,  ///< convex / concave / saddle / flat (planning::segmentByCurvatureType)
   ToolRadius,         ///< classes of the largest non-gouging tool (planning::segmentByToolRadius)
+  CadFace,  ///< one region per CAD face of a CAD part (planning::segmentByCadFace, minFaces 1)
 };
 
 /// @brief Segments the part into regions (issue 4, sec. 8.1) and edits them: automatic
 /// segmentation as a job (curvature, then segmentation by curvature type or tool-radius
-/// classes with a minimum region size); a region list (name, face count, colour) with rename,
+/// classes with a minimum region size; or, for a part imported from CAD, one region per CAD
+/// face); a region list (name, face count, colour) with rename,
 /// merge, split into connected parts and delete; brush, eraser and lasso painting on the view
 /// (RegionViewTool); and the planning choices of the selected region (RegionPlanEditor). Every
 /// edit is one SetRegionsCommand on the undo stack.
@@ -47,7 +49,8 @@ class SegmentationPanel : public Panel {
   QString id() const override { return "segmentation"; }
 
   /// @brief Chooses the automatic method, the flat threshold (1/mm, CurvatureType), the tool
-  /// radii (mm, ascending, ToolRadius) and the minimum region size (faces).
+  /// radii (mm, ascending, ToolRadius) and the minimum region size (faces; not for CadFace).
+  /// CadFace falls back to CurvatureType unless the part has CAD faces.
   void setSegmentationOptions(SegmentationMethod method, double flatCurvaturePerMm,
                               const std::vector<double>& toolRadiiMm, int minFaces);
   /// @brief Starts the automatic segmentation as a job. @return false if it did not start.
@@ -84,6 +87,8 @@ class SegmentationPanel : public Panel {
   bool pushRegions(const QString& text, const std::function<std::vector<planning::Region>(
                                             const std::vector<planning::Region>&)>& edit);
   QWidget* buildAutomaticGroup();
+  /// Enables the CAD-face method only for a CAD part and each method's own controls.
+  void updateMethodControls();
   QWidget* buildRegionGroup();
   QWidget* buildPaintGroup();
 

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+// ddfcam-cli: --units and the size warning.
+#include "unit_options.h"
+
+#include "console.h"
+
+#include <cstdio>
+#include <string>
+
+namespace ddfcam::cli {
+
+std::string unitsHelpLine(int column) {
+  std::string line = "  --units U";
+  line.resize(static_cast<std::size_t>(column), ' ');
+  return line + "unit of the input file's coordinates: " + std::string(lengthUnitChoices()) + "\n" +
+         std::string(static_cast<std::size_t>(column), ' ') +
+         "(default: the unit a STEP/IGES file states, mm for meshes)\n";
+}
+
+std::optional<ddfcam::LengthUnit> unitOption(const Arguments& args) {
+  const std::optional<std::string> text = args.value("units");
+  if (!text) return std::nullopt;
+  const std::optional<ddfcam::LengthUnit> unit = parseLengthUnit(*text);
+  if (!unit)
+    throw UsageError("--units expects " + std::string(lengthUnitChoices()) + ", got '" + *text +
+                     "'");
+  return unit;
+}
+
+bool warnIfOtherUnit(const std::filesystem::path& file, double fileDiagonal,
+                     const std::optional<ddfcam::LengthUnit>& given) {
+  if (given || !sizeSuggestsOtherUnit(fileDiagonal)) return false;
+  char hint[160];
+  if (const std::optional<ddfcam::LengthUnit> likely = likelyUnit(fileDiagonal)) {
+    std::snprintf(hint, sizeof hint, "as %s it would be %.4g mm",
+                  std::string(unitSymbol(*likely)).c_str(), fileDiagonal * millimetresPer(*likely));
+  } else {
+    std::snprintf(hint, sizeof hint, "as mm it is %.4g m across", fileDiagonal / 1000.0);
+  }
+  endProgressLine();
+  std::fflush(stdout);
+  std::fprintf(stderr, "warning: %s is %.4g units across; if it is not in mm, pass --units (%s)\n",
+               file.string().c_str(), fileDiagonal, hint);
+  return true;
+}
+
+ddf::DisplacementField loadPartInUnit(const std::filesystem::path& path, io::LoadPartParams params,
+                                      const char* label, io::LoadPartReport* report) {
+  params.progress = consoleProgress(label);
+  io::LoadPartReport local;
+  io::LoadPartReport& r = report ? *report : local;
+  ddf::DisplacementField part = io::loadPart(path, params, &r);
+  endProgressLine();
+  // A CAD file states its unit, so its size needs no second opinion.
+  if (r.converted && !r.unitFromFile) warnIfOtherUnit(path, r.fileDiagonal, params.unit);
+  return part;
+}
+
+}  // namespace ddfcam::cli

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// ddfcam-cli: the --units option of the commands that read a part or a surface, and the
+// warning when a file's size suggests another unit.
+#pragma once
+
+#include <ddfcam/io/part_loader.h>
+#include <ddfcam/length_unit.h>
+
+#include "arguments.h"
+
+#include <filesystem>
+#include <optional>
+
+namespace ddfcam::cli {
+
+/// @brief The option spec of --units.
+inline const OptionSpec kUnitsOption{"units", '\0', true};
+
+/// @brief Help text line of --units, aligned at column @p column (0-based) like the others.
+std::string unitsHelpLine(int column);
+
+/// @brief The unit given with --units, or std::nullopt if absent.
+/// @throws UsageError for a unit parseLengthUnit does not know, listing lengthUnitChoices().
+std::optional<ddfcam::LengthUnit> unitOption(const Arguments& args);
+
+/// @brief Prints "warning: <file> is <d> units across; if it is not in mm, pass --units (as m
+/// it would be ... mm)" on stderr when no unit was given and sizeSuggestsOtherUnit(@p
+/// fileDiagonal) holds; nothing otherwise.
+/// @return whether it warned.
+bool warnIfOtherUnit(const std::filesystem::path& file, double fileDiagonal,
+                     const std::optional<ddfcam::LengthUnit>& given);
+
+/// @brief io::loadPart of @p path in params.unit (set it from unitOption), with a console
+/// progress line labelled @p label; warns as warnIfOtherUnit for a converted mesh file.
+/// @param report if not null, receives the load report.
+/// @throws as io::loadPart.
+ddf::DisplacementField loadPartInUnit(const std::filesystem::path& path, io::LoadPartParams params,
+                                      const char* label, io::LoadPartReport* report = nullptr);
+
+}  // namespace ddfcam::cli

@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: MIT
+// ddfcam: item buffers of the support reduction (sec. 6.2).
+#include "reduction_items.h"
+
+#include <ddfcam/ddf/raster.h>
+#include <ddfcam/ddf/v_projection.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ddfcam::ddf::detail {
+namespace {
+
+// Barycentric tolerance of a hit: rays through a shared input edge or vertex hit both sides,
+// so boundary raster points on the input's boundary are never lost to rounding.
+constexpr double kLambdaTolerance = 1e-7;
+// Hits count within |h| <= 1 - kHeightMargin: the depth buffer's fill runs in float and must
+// find every hit the reduction relied on.
+constexpr double kHeightMargin = 1e-5;
+// Heights closer than this count as equal when choosing the nearest item.
+constexpr double kTieTolerance = 1e-9;
+
+Vec3 rasterMu(int i, int k, int n) {
+  return Vec3(i, n - i - k, k) / static_cast<double>(n);
+}
+
+Vec3 vectorAt(const FaceCorners& face, const Vec3& mu) {
+  return mu[0] * face.v[0] + mu[1] * face.v[1] + mu[2] * face.v[2];
+}
+
+// Takes the hit of @p item at raster point @p idx when it is nearer than the stored one; equal
+// heights (a ray through an input edge) go to the item facing the ray best.
+void offerHit(const FaceCorners& face, int n, int i, int k, std::size_t idx, double h, int item,
+              const ReductionItems& items, FaceItems& out) {
+  const double old = std::abs(out.h[idx]), ah = std::abs(h);
+  bool take = out.hit[idx] < 0 || ah < old - kTieTolerance;
+  if (!take && ah <= old + kTieTolerance) {
+    const Vec3 v = vectorAt(face, rasterMu(i, k, n));
+    take = v.dot(items.normals[item]) > v.dot(items.normals[out.hit[idx]]);
+  }
+  if (take) out.hit[idx] = item, out.h[idx] = h;
+}
+
+// Shoots every raster point of one (face, item) pair from the linear forms of sec. 5.2; at the
+// resolutions of the reduction a row holds too few points for the interval search of the cut
+// kernel to pay. Returns whether any ray hit within |h| <= 1.
+bool shootPair(const FaceCorners& face, int n, const PairForms& f, int item,
+               const ReductionItems& items, FaceItems& out) {
+  bool any = false;
+  std::size_t idx = 0;
+  for (int k = 0; k <= n; ++k) {
+    const double nk = f.n.base + k * f.n.dk, dk = f.d.base + k * f.d.dk;
+    std::array<double, 3> ak, bk;
+    for (int j = 0; j < 3; ++j)
+      ak[j] = f.a[j].base + k * f.a[j].dk, bk[j] = f.b[j].base + k * f.b[j].dk;
+    for (int i = 0; i <= n - k; ++i, ++idx) {
+      const double d = dk + i * f.d.di;
+      if (d == 0.0) continue;
+      const double h = (nk + i * f.n.di) / d;
+      if (!(std::abs(h) <= 1.0 - kHeightMargin)) continue;
+      bool inside = true;
+      for (int j = 0; j < 3 && inside; ++j)
+        inside = ak[j] + i * f.a[j].di + h * (bk[j] + i * f.b[j].di) >= -kLambdaTolerance;
+      if (!inside) continue;
+      any = true;
+      offerHit(face, n, i, k, idx, h, item, items, out);
+    }
+  }
+  return any;
+}
+
+bool separatedAlong(const FaceCorners& face, const ReductionItems& items, int item,
+                    const Vec3& axis) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (int i = 0; i < 3; ++i)
+    for (const Vec3& c : {Vec3(face.p[i] + face.v[i]), Vec3(face.p[i] - face.v[i])}) {
+      const double x = c.dot(axis);
+      lo = std::min(lo, x), hi = std::max(hi, x);
+    }
+  double tLo = std::numeric_limits<double>::infinity(), tHi = -tLo;
+  for (int k = 0; k < 3; ++k) {
+    const double x = items.corner(item, k).dot(axis);
+    tLo = std::min(tLo, x), tHi = std::max(tHi, x);
+  }
+  return tHi < lo || hi < tLo;
+}
+
+// The +-1 crust lies in the hull of its six corners p_i +- v_i: an axis separating that hull
+// from the item (its normal, the face normal, the side-wall normals) proves no ray hits it.
+bool itemSeparated(const FaceCorners& face, const ReductionItems& items, int item) {
+  const auto& p = face.p;
+  if (separatedAlong(face, items, item, items.normals[item])) return true;
+  if (separatedAlong(face, items, item, (p[1] - p[0]).cross(p[2] - p[0]))) return true;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    if (separatedAlong(face, items, item, (p[j] - p[i]).cross(face.v[i] + face.v[j]))) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool betweenOffsets(const FaceCorners& face, const Vec3& q) {
+  const Vec3 g = (face.p[0] + face.p[1] + face.p[2]) / 3.0;
+  for (double h : {1.0, -1.0}) {
+    const Vec3 a = face.p[0] + h * face.v[0], b = face.p[1] + h * face.v[1],
+               c = face.p[2] + h * face.v[2];
+    const Vec3 n = (b - a).cross(c - a);
+    const double sq = n.dot(q - a), sg = n.dot(g - a);
+    if (!(sq * sg > 0.0)) return false;
+  }
+  return true;
+}
+
+ReductionItems ReductionItems::fromMesh(const SupportMesh& mesh) {
+  ReductionItems out;
+  out.points.reserve(mesh.n_vertices());
+  for (const auto vh : mesh.vertices()) out.points.push_back(toEigen(mesh.point(vh)));
+  out.vertices.reserve(mesh.n_faces());
+  for (const auto fh : mesh.faces()) {
+    std::array<int, 3> t{};
+    int k = 0;
+    for (const auto vh : mesh.fv_range(fh)) t[k++] = vh.idx();
+    out.vertices.push_back(t);
+    const Vec3 &a = out.points[t[0]], &b = out.points[t[1]], &c = out.points[t[2]];
+    const Vec3 n = (b - a).cross(c - a);
+    out.normals.push_back(n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::Zero());
+    Eigen::AlignedBox3d box(a);
+    box.extend(b), box.extend(c);
+    out.boxes.push_back(box);
+  }
+  return out;
+}
+
+Eigen::AlignedBox3d crustBox(const FaceCorners& face) {
+  Eigen::AlignedBox3d box(face.p[0] + face.v[0]);
+  for (int i = 0; i < 3; ++i) box.extend(face.p[i] + face.v[i]), box.extend(face.p[i] - face.v[i]);
+  return box;
+}
+
+void rasterFace(const FaceCorners& face, int m, const ReductionItems& items,
+                std::span<const int> candidates, FaceItems& out) {
+  const int n = m - 1;
+  const std::size_t points = Raster{m}.pointCount();
+  out.hit.assign(points, -1);
+  out.h.assign(points, 0.0);
+  out.items.clear();
+  const Eigen::AlignedBox3d box = crustBox(face);
+  for (int t : candidates) {
+    if (!box.intersects(items.boxes[t]) || itemSeparated(face, items, t)) continue;
+    const auto forms = makePairForms(face, items.corner(t, 0), items.corner(t, 1),
+                                     items.corner(t, 2), n, KernelMode::Fill);
+    if (!forms) continue;
+    if (shootPair(face, n, *forms, t, items, out)) out.items.push_back(t);
+  }
+  std::sort(out.items.begin(), out.items.end());
+}
+
+bool everyRayHits(const FaceItems& f) {
+  return std::none_of(f.hit.begin(), f.hit.end(), [](int t) { return t < 0; });
+}
+
+bool anglesBounded(const FaceCorners& face, int m, const FaceItems& f, const ReductionItems& items,
+                   double minCosine) {
+  const int n = m - 1;
+  const Raster raster{m};
+  for (int k = 0; k <= n; ++k)
+    for (int i = 0; i <= n - k; ++i) {
+      const int t = f.hit[raster.index(i, k)];
+      if (t < 0) continue;
+      const Vec3 v = vectorAt(face, rasterMu(i, k, n));
+      if (v.dot(items.normals[t]) < minCosine * v.norm()) return false;
+    }
+  return true;
+}
+
+VertexPlace placeVertex(const Vec3& q, std::span<const FaceCorners> faces) {
+  VertexPlace place = VertexPlace::Outside;
+  for (const FaceCorners& f : faces) {
+    const auto sols = vProject(q, f.p[0], f.p[1], f.p[2], f.v[0], f.v[1], f.v[2]);
+    for (const VProjection& s : sols) {
+      if (!s.inside) continue;
+      if (std::abs(s.h) <= 1.0 + 1e-9) return VertexPlace::Inside;
+      place = VertexPlace::Beyond;
+    }
+  }
+  return place;
+}
+
+}  // namespace ddfcam::ddf::detail

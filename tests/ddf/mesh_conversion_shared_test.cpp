@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+// Conversion of shared third-party parts with a reduced support and a tolerance: both
+// distances checked by brute force on a sample (label data; skips without the shared data).
+#include <ddfcam/ddf/mesh_conversion.h>
+#include <ddfcam/log.h>
+
+#include <gtest/gtest.h>
+#include <OpenMesh/Core/IO/MeshIO.hh>
+
+#include <chrono>
+#include <filesystem>
+
+#include "../support/ddf_surface_distance.h"
+
+namespace ddfcam::ddf {
+namespace {
+
+/// The shared mesh @p name scaled by @p scale to mm, or nullopt when the data is absent.
+std::optional<TriangleMesh> sharedMesh(const std::string& name, double scale) {
+  const auto path = std::filesystem::path(DDFCAM_SHARED_DATA_DIR) / "meshes" / name;
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  SupportMesh mesh;
+  if (!OpenMesh::IO::read_mesh(mesh, path.string())) return std::nullopt;
+  TriangleMesh out;
+  for (const auto vh : mesh.vertices()) out.vertices.push_back(scale * toEigen(mesh.point(vh)));
+  for (const auto fh : mesh.faces()) {
+    std::array<int, 3> t;
+    int k = 0;
+    for (const auto vh : mesh.fv_range(fh)) t[k++] = vh.idx();
+    out.triangles.push_back(t);
+  }
+  return out;
+}
+
+/// Converts @p input with a reduced support and @p toleranceMm; the reported both-way distances
+/// must bound the brute-force ones, and with @p mustMeet the tolerance must hold.
+void expectReducedWithin(const TriangleMesh& input, double toleranceMm, bool mustMeet = true) {
+  ConversionParams params;
+  params.support = SupportChoice::Reduced;
+  params.toleranceMm = toleranceMm;
+  // The tries (support faces, m, both distances, the worst input point) go to the test log.
+  const LogSink previous =
+      setLogSink([](LogLevel, const std::string& message) { std::cout << message << "\n"; });
+  const auto start = std::chrono::steady_clock::now();
+  const auto result = convertMeshToDdf(input, params);
+  setLogSink(previous);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (const auto& line : conversionSummaryLines(result.report)) std::cout << line << "\n";
+  std::cout << conversionVerdict(result.report) << " (" << seconds << " s)\n";
+  EXPECT_LT(result.ddf.faceCount(), static_cast<int>(input.triangles.size()));
+  ASSERT_TRUE(result.accuracy.measured);
+  if (mustMeet) {
+    EXPECT_TRUE(result.accuracy.toleranceMet) << result.accuracy.note;
+  } else if (!result.accuracy.toleranceMet) {
+    EXPECT_FALSE(result.accuracy.note.empty()) << "an unmet tolerance must say why";
+  }
+  // Brute force over the whole lattice surface for a sample of input points, and over the
+  // whole input for a sample of raster points.
+  const TriangleMesh surface = test::latticeSurface(result.ddf);
+  const auto inputPoints = test::triangleSamples(input, 97);
+  const auto rasterPoints = test::rasterSurfacePoints(result.ddf, 211);
+  const double in = test::largestDistance(inputPoints, surface);
+  const double out = test::largestDistance(rasterPoints, input);
+  if (mustMeet) {
+    EXPECT_LE(in, toleranceMm) << inputPoints.size() << " input samples";
+    EXPECT_LE(out, toleranceMm) << rasterPoints.size() << " raster samples";
+  }
+  EXPECT_GE(result.accuracy.inputToDdfMm, in - 1e-9);
+  EXPECT_GE(result.accuracy.ddfToInputMm, out - 1e-9);
+  testing::Test::RecordProperty("faces", std::to_string(result.ddf.faceCount()));
+  testing::Test::RecordProperty("m", std::to_string(result.ddf.resolution()));
+  testing::Test::RecordProperty("seconds", std::to_string(seconds));
+}
+
+// The blade does not meet 0.05 mm yet (0.058 mm after four supports, worst at its sharp edges,
+// and raster points off the input on the finer supports): the reported distances must still be
+// honest upper bounds of the brute-force ones, and the note must say why.
+TEST(MeshConversionShared, TurbineBladeReducedReportsItsDistancesHonestly) {
+  const auto blade = sharedMesh("turbine-blade-jigsaw.stl", 1000.0);  // metres
+  if (!blade) GTEST_SKIP() << "shared mesh data not present";
+  expectReducedWithin(*blade, 0.05, false);
+}
+
+TEST(MeshConversionShared, FandiskReducedWithinTolerance) {
+  const auto fandisk = sharedMesh("fandisk.obj", 1.0);
+  if (!fandisk) GTEST_SKIP() << "shared mesh data not present";
+  expectReducedWithin(*fandisk, 0.05);
+}
+
+}  // namespace
+}  // namespace ddfcam::ddf
