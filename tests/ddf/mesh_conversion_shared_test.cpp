@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include "../support/ddf_surface_distance.h"
+#include "../support/support_triangles.h"
 
 namespace ddfcam::ddf {
 namespace {
@@ -21,15 +22,7 @@ std::optional<TriangleMesh> sharedMesh(const std::string& name, double scale) {
   if (!std::filesystem::exists(path)) return std::nullopt;
   SupportMesh mesh;
   if (!OpenMesh::IO::read_mesh(mesh, path.string())) return std::nullopt;
-  TriangleMesh out;
-  for (const auto vh : mesh.vertices()) out.vertices.push_back(scale * toEigen(mesh.point(vh)));
-  for (const auto fh : mesh.faces()) {
-    std::array<int, 3> t;
-    int k = 0;
-    for (const auto vh : mesh.fv_range(fh)) t[k++] = vh.idx();
-    out.triangles.push_back(t);
-  }
-  return out;
+  return test::supportTriangles(mesh, scale);
 }
 
 /// Converts @p input with a reduced support and @p toleranceMm; the reported both-way distances

@@ -28,6 +28,7 @@
 
 #include "../support/brute_force_distance.h"
 #include "../support/ddf_surface_distance.h"
+#include "../support/support_triangles.h"
 
 namespace ddfcam::planning {
 namespace {
@@ -44,16 +45,7 @@ std::optional<ddf::TriangleMesh> sharedMesh(const std::string& name, double scal
   if (!std::filesystem::exists(path)) return std::nullopt;
   ddf::SupportMesh mesh;
   if (!OpenMesh::IO::read_mesh(mesh, path.string())) return std::nullopt;
-  ddf::TriangleMesh out;
-  for (const auto vh : mesh.vertices())
-    out.vertices.push_back(scale * ddf::toEigen(mesh.point(vh)));
-  for (const auto fh : mesh.faces()) {
-    std::array<int, 3> t;
-    int k = 0;
-    for (const auto vh : mesh.fv_range(fh)) t[k++] = vh.idx();
-    out.triangles.push_back(t);
-  }
-  return out;
+  return test::supportTriangles(mesh, scale);
 }
 
 void printReach(const char* part, const char* when, const ddf::CrustReach& r) {
