@@ -164,6 +164,38 @@ std::vector<int> groupFaces(const PairGroups& g) {
   return faces;
 }
 
+// A copy of a shared raster point that the kernel missed in its own face while another copy of
+// the same stubble got a hit (float rounding at an edge of the surface or of a clipped piece)
+// takes that hit: the canonical synchronization would otherwise give every copy the missed
+// copy's stale height, unreported, although the stubble meets the surface.
+void adoptSharedHits(const DisplacementField& ddf, std::vector<float>& result) {
+  const RasterTopology& topology = ddf.topology();
+  const int n = ddf.raster().steps();
+  const std::size_t per = ddf.pointsPerFace();
+  for (int e = 0; e < static_cast<int>(ddf.support().n_edges()); ++e) {
+    const auto& sides = topology.edgeFaces(e);
+    if (sides[0] < 0 || sides[1] < 0) continue;
+    const int e0 = topology.localEdgeOf(sides[0], e), e1 = topology.localEdgeOf(sides[1], e);
+    for (int t = 1; t < n; ++t) {
+      float& a = result[sides[0] * per + topology.edgeCopyLocal(sides[0], e0, t)];
+      float& b = result[sides[1] * per + topology.edgeCopyLocal(sides[1], e1, t)];
+      if (std::isnan(a)) a = b;
+      if (std::isnan(b)) b = a;
+    }
+  }
+  for (int v = 0; v < ddf.vertexCount(); ++v) {
+    const auto copy = [&](int f) -> float& {
+      const auto& fv = ddf.faceVertices(f);
+      return result[f * per + ddf.raster().index(fv[0] == v ? n : 0, fv[2] == v ? n : 0)];
+    };
+    float hit = std::numeric_limits<float>::quiet_NaN();
+    for (int f : topology.vertexFaces(v))
+      if (std::isnan(hit)) hit = copy(f);
+    for (int f : topology.vertexFaces(v))
+      if (std::isnan(copy(f))) copy(f) = hit;
+  }
+}
+
 }  // namespace
 
 std::size_t cutFaceByTriangle(DisplacementField& ddf, int face, const Vec3& q1, const Vec3& q2,
@@ -272,6 +304,7 @@ FillReport fillFromMesh(DisplacementField& ddf, const CrustHash& hash, const Tri
       }
     });
   }
+  adoptSharedHits(ddf, result);
   FillReport report;
   report.missingMask.assign(result.size(), 0);
   auto& heights = ddf.allHeights();

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <tuple>
 
 namespace ddfcam::ddf::detail {
 namespace {
@@ -109,20 +110,37 @@ bool exactRow(float* heights, const Raster& raster, const PairForms& forms, int 
   return count > 0;
 }
 
-// Row k from the projected triangle: its span on the row (nearest row inside the triangle's
-// k range for rows just outside), widened by two points, then grown while the exact test hits.
-void polygonRow(float* heights, const Raster& raster, const PairForms& forms, const Seed& seed,
-                int k, KernelMode mode, float tol, KernelCounts& counts) {
-  const double kk = std::clamp(static_cast<double>(k), seed.kMin, seed.kMax);
+// Rows on either side of a row whose part of the projected triangle bounds the row's span. The
+// projected edges are curves and the corners are projected to a tolerance, so an edge almost
+// parallel to the rows may be hit a fraction of a row beyond its straight chord, and then
+// anywhere along it: a row just outside the corners' k range, or just beyond such an edge,
+// must be scanned along all of it (a support edge row of a thin part's reduced support).
+constexpr double kRowSlack = 1.0;
+
+/// Span in i of the projected triangle within rows [lo, hi]: its corners there and the
+/// crossings of its edges with both bounds (empty, xMin > xMax, when it misses the strip).
+std::pair<double, double> stripSpan(const Seed& seed, double lo, double hi) {
   double xMin = std::numeric_limits<double>::infinity(), xMax = -xMin;
+  const auto take = [&](double x) { xMin = std::min(xMin, x), xMax = std::max(xMax, x); };
   for (int e = 0; e < 3; ++e) {
     const auto& a = seed.corner[e];
     const auto& b = seed.corner[(e + 1) % 3];
-    if ((a.y() - kk) * (b.y() - kk) > 0.0) continue;
-    const double x =
-        a.y() == b.y() ? a.x() : a.x() + (kk - a.y()) / (b.y() - a.y()) * (b.x() - a.x());
-    xMin = std::min({xMin, x, a.y() == b.y() ? b.x() : x});
-    xMax = std::max({xMax, x, a.y() == b.y() ? b.x() : x});
+    if (a.y() >= lo && a.y() <= hi) take(a.x());
+    for (const double y : {lo, hi})
+      if ((a.y() - y) * (b.y() - y) < 0.0)
+        take(a.x() + (y - a.y()) / (b.y() - a.y()) * (b.x() - a.x()));
+  }
+  return {xMin, xMax};
+}
+
+// Row k from the projected triangle: its span within kRowSlack rows of k (that of the nearest
+// corner for rows farther outside), widened by two points, then grown while the exact test hits.
+void polygonRow(float* heights, const Raster& raster, const PairForms& forms, const Seed& seed,
+                int k, KernelMode mode, float tol, KernelCounts& counts) {
+  auto [xMin, xMax] = stripSpan(seed, k - kRowSlack, k + kRowSlack);
+  if (!(xMax >= xMin)) {
+    const double kk = std::clamp(static_cast<double>(k), seed.kMin, seed.kMax);
+    std::tie(xMin, xMax) = stripSpan(seed, kk, kk);
   }
   const int length = raster.rowLength(k);
   if (!(xMax >= xMin)) return;

@@ -205,6 +205,50 @@ TEST(DepthBuffer, RowRestrictionNeverChangesACutOnCurvedParts) {
   }
 }
 
+TEST(DepthBuffer, RowRestrictionNeverChangesResultsAlongASupportEdge) {
+  // Tool triangles with an edge almost along raster row 0, a fraction of a row inside the face,
+  // on a small face with strongly varying vectors (curved projected edges, as on a reduced
+  // support of a thin part): the rows bounded by the projected triangle must still give the
+  // heights of scanning every raster point, for fills and cuts.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), p(0.0, 1.0);
+  const auto mesh = test::gridMesh(1, 1, 1.6, 1.6);
+  constexpr int m = 20;
+  std::size_t differing = 0, filled = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    std::vector<Vec3> vectors;
+    for (int v = 0; v < 4; ++v)
+      vectors.emplace_back(0.6 * u(rng), 0.6 * u(rng), 1.1 + 0.2 * u(rng));
+    const DisplacementField ddf(mesh, vectors, m, 0.0f);
+    const int f = trial % 2;
+    const auto at = [&](double mu1, double mu3, double h) {
+      const Vec3 bary(mu1, 1.0 - mu1 - mu3, mu3);
+      return Vec3(ddf.basePoint(f, bary) + h * ddf.vectorAt(f, bary));
+    };
+    const double h = 0.6 * u(rng);
+    const double nearRow0 = 0.3 / (m - 1);
+    std::array<Vec3, 3> q = {at(-0.4 * p(rng), (0.5 + p(rng)) * nearRow0, h),
+                             at(1.0 + 0.4 * p(rng), (0.5 + p(rng)) * nearRow0, h + 0.1 * u(rng)),
+                             at(0.3 * p(rng), 0.3 + 0.6 * p(rng), h)};
+    if (trial % 4 >= 2) std::swap(q[1], q[2]);
+    const TriangleMesh tool{{q[0], q[1], q[2]}, {{0, 1, 2}}};
+    const CrustHash hash(ddf);
+    DisplacementField restricted = ddf, full = ddf;
+    const auto report = fillFromMesh(restricted, hash, tool);
+    fillFromMesh(full, hash, tool, {.kernel = {.restrictIntervals = false}});
+    DisplacementField cutRestricted(mesh, vectors, m, 1.0f), cutFull = cutRestricted;
+    cutFaceByTriangle(cutRestricted, f, q[0], q[1], q[2]);
+    cutFaceByTriangle(cutFull, f, q[0], q[1], q[2], {.restrictIntervals = false});
+    for (std::size_t i = 0; i < full.allHeights().size(); ++i) {
+      differing += restricted.allHeights()[i] != full.allHeights()[i];
+      differing += cutRestricted.allHeights()[i] != cutFull.allHeights()[i];
+    }
+    filled += report.filled;
+  }
+  EXPECT_GT(filled, 10000u);
+  EXPECT_EQ(differing, 0u);
+}
+
 TEST(DepthBuffer, LocalizationIsSupersetOfBruteForce) {
   RadialSphere s;
   const CrustHash hash(s.ddf);
