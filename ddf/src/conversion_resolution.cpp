@@ -83,6 +83,8 @@ std::size_t fillMissed(const TriangleMesh& mesh, const FillReport& report, Displ
     else
       ++missed;
   }
+  // Every copy of a shared point was missed and looked at again on its own: one value for all.
+  ddf.synchronizeShared(SharedPolicy::Canonical);
   return missed;
 }
 
@@ -152,6 +154,50 @@ class Meter {
   double longestEdgeMm_;
 };
 
+/// The parts of a result a refill changes: what a finer raster that does worse goes back to.
+struct FillState {
+  DisplacementField ddf;
+  ConversionAccuracy accuracy;
+  std::size_t filled = 0, unfilled = 0;
+};
+
+FillState saved(const ConversionResult& r) {
+  return {r.ddf, r.accuracy, r.filledPoints, r.unfilledPoints};
+}
+
+void restore(FillState&& state, ConversionResult& r) {
+  const int tries = r.accuracy.resolutionTries;
+  r.ddf = std::move(state.ddf);
+  r.accuracy = state.accuracy;
+  r.accuracy.resolutionTries = tries;
+  r.filledPoints = state.filled;
+  r.unfilledPoints = r.report.unfilledPoints = state.unfilled;
+}
+
+/// Why the raise from m to @p next stops (empty: go on); restores the coarser raster when the
+/// finer one is worse or has stubbles that miss the input where the coarser had none (a reduced
+/// support was checked at its own m only, and a missed stubble keeps the support's position).
+/// @param capLimit empty, or the limit that cut the step short: a short step says little about
+/// how the distance falls, so a stall is reported as that limit.
+std::string judgeRaise(FillState&& before, const MeasuredDistances& d, const MeasuredDistances& now,
+                       double tol, const std::string& capLimit, ConversionResult& result) {
+  const int m = before.ddf.resolution(), next = result.ddf.resolution();
+  if (result.unfilledPoints > before.unfilled) {
+    const std::size_t missed = result.unfilledPoints;
+    restore(std::move(before), result);
+    return "at m = " + std::to_string(next) + " " + std::to_string(missed) +
+           " stubbles miss the input, so m stays at " + std::to_string(m);
+  }
+  if (!(now.worstMm() > kStallRatio * d.worstMm()) || now.worstMm() <= tol) return {};
+  if (now.worstMm() > d.worstMm()) restore(std::move(before), result);
+  if (!capLimit.empty()) return capLimit;
+  return "the distance stopped shrinking with the resolution (" + mm(d.worstMm()) +
+         " at m = " + std::to_string(m) + ", " + mm(now.worstMm()) +
+         " at m = " + std::to_string(next) +
+         "): the support cannot follow the input there (a crease or an edge that one support "
+         "face spans)";
+}
+
 /// Raises m until both distances are within params.toleranceMm; returns why not (empty: met).
 std::string raiseResolutionFor(const TriangleMesh& mesh, const ConversionParams& params,
                                const Meter& meter, MeasuredDistances d, ConversionResult& result) {
@@ -160,26 +206,24 @@ std::string raiseResolutionFor(const TriangleMesh& mesh, const ConversionParams&
   double share = 0.75;
   while (d.worstMm() > tol) {
     const int m = result.ddf.resolution();
-    const int next = std::min(nextResolution(m, d.worstMm() / tol), largest);
-    if (next <= m)
-      return "the resolution reached its limit (m = " + std::to_string(m) +
-             ": at most m = " + std::to_string(kMaxResolution) + " and " +
-             std::to_string(params.maxRasterPoints) + " raster points)";
+    const int wanted = nextResolution(m, d.worstMm() / tol), next = std::min(wanted, largest);
+    const std::string limit =
+        "the resolution reached its limit (m = " + std::to_string(std::max(m, next)) +
+        ": at most m = " + std::to_string(kMaxResolution) + " and " +
+        std::to_string(params.maxRasterPoints) + " raster points)";
+    if (next <= m) return limit;
     if (result.accuracy.resolutionTries >= kMaxTries)
       return std::to_string(kMaxTries) + " resolutions were tried";
+    FillState before = saved(result);
     const double end = share + 0.5 * (0.93 - share);
     refill(mesh, next, result, progressShare(params.progress, share, share + 0.6 * (end - share)));
     const MeasuredDistances now =
         meter.measure(result, progressShare(params.progress, share + 0.6 * (end - share), end));
     share = end;
     ++result.accuracy.resolutionTries;
-    const bool stalled = now.worstMm() > kStallRatio * d.worstMm();
-    if (stalled && now.worstMm() > tol)
-      return "the distance stopped shrinking with the resolution (" + mm(d.worstMm()) +
-             " at m = " + std::to_string(m) + ", " + mm(now.worstMm()) +
-             " at m = " + std::to_string(next) +
-             "): the support cannot follow the input there (a crease "
-             "or an edge that one support face spans, or stubbles that miss the input)";
+    const std::string why =
+        judgeRaise(std::move(before), d, now, tol, next < wanted ? limit : "", result);
+    if (!why.empty()) return why;
     d = now;
   }
   return {};
@@ -228,8 +272,7 @@ ProgressCallback progressShare(const ProgressCallback& progress, double from, do
 }
 
 void fillHeights(const TriangleMesh& mesh, const ConversionParams& params,
-                 std::span<const int> keptTriangles, ConversionResult& result,
-                 bool raiseResolution) {
+                 std::span<const int> keptTriangles, ConversionResult& result, bool warnOnMiss) {
   fillFromInput(mesh, result, progressShare(params.progress, 0.6, 0.7));
   ConversionAccuracy& accuracy = result.accuracy;
   accuracy.toleranceMm = params.toleranceMm;
@@ -241,8 +284,7 @@ void fillHeights(const TriangleMesh& mesh, const ConversionParams& params,
   const MeasuredDistances first = meter.measure(result, progressShare(params.progress, 0.7, 0.75));
   accuracy.resolutionTries = 1;
   std::string why;
-  if (params.toleranceMm > 0.0 && raiseResolution)
-    why = raiseResolutionFor(mesh, params, meter, first, result);
+  if (params.toleranceMm > 0.0) why = raiseResolutionFor(mesh, params, meter, first, result);
   if (params.stockMm > 0.0) {
     fitStock(mesh, params, result, progressShare(params.progress, 0.93, 0.95));
     meter.measure(result, progressShare(params.progress, 0.95, 1.0));
@@ -250,10 +292,10 @@ void fillHeights(const TriangleMesh& mesh, const ConversionParams& params,
   if (params.toleranceMm > 0.0) {
     accuracy.toleranceMet =
         std::max(accuracy.inputToDdfMm, accuracy.ddfToInputMm) <= params.toleranceMm;
-    if (!accuracy.toleranceMet && raiseResolution) {
+    if (!accuracy.toleranceMet) {
       accuracy.note = toleranceNote(
           accuracy, why.empty() ? "the stock fit moved the surface beyond the tolerance" : why);
-      log(LogLevel::Warning, "mesh conversion: " + accuracy.note);
+      if (warnOnMiss) log(LogLevel::Warning, "mesh conversion: " + accuracy.note);
     }
   }
 }

@@ -14,19 +14,18 @@ namespace ddfcam::ddf::detail {
 ProgressCallback progressShare(const ProgressCallback& progress, double from, double to);
 
 /// @brief Fills the heights of result.ddf from @p mesh (its support and vectors are final),
-/// raising the resolution for params.toleranceMm (when @p raiseResolution), fitting the crust
-/// for params.stockMm, and measuring the distances to @p mesh where params ask for them (see
-/// ConversionParams); sets result.accuracy, result.stock, the fill counts and their copies in
-/// result.report.
+/// raising the resolution for params.toleranceMm, fitting the crust for params.stockMm, and
+/// measuring the distances to @p mesh where params ask for them (see ConversionParams); sets
+/// result.accuracy (with a note on a tolerance not met), result.stock, the fill counts and
+/// their copies in result.report.
 /// @param keptTriangles the input triangles the support kept: the input samples are taken
 /// from them. Progress runs over [0.6, 1] of params.progress.
-/// @param raiseResolution false keeps the resolution of result.ddf (a reduced support, whose
-/// stubbles were checked at that resolution only); a tolerance not met is then left for the
-/// caller to note (toleranceNote).
+/// @param warnOnMiss log the note on a tolerance not met as a warning; false leaves that to
+/// the caller (the tolerance tries of a reduced support, which try other supports).
 /// @throws Cancelled through params.progress.
 void fillHeights(const TriangleMesh& mesh, const ConversionParams& params,
                  std::span<const int> keptTriangles, ConversionResult& result,
-                 bool raiseResolution = true);
+                 bool warnOnMiss = true);
 
 /// @brief The note on a tolerance not met: m, spacing, both distances and where they are
 /// largest, then @p why.

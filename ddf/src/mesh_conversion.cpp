@@ -3,6 +3,7 @@
 #include "conversion_accuracy.h"
 #include "conversion_repair.h"
 #include "conversion_resolution.h"
+#include "conversion_tolerance.h"
 
 #include <ddfcam/ddf/mesh_conversion.h>
 #include <ddfcam/error.h>
@@ -277,8 +278,9 @@ void copySummary(ConversionResult& result) {
   result.report.stock = result.stock;
 }
 
-/// One conversion; @p raise lets the tolerance raise m on the final support (see fillHeights).
-ConversionResult convertOnce(const TriangleMesh& mesh, const ConversionParams& params, bool raise) {
+/// One conversion; @p warnOnMiss logs a tolerance not met (see fillHeights).
+ConversionResult convertOnce(const TriangleMesh& mesh, const ConversionParams& params,
+                             bool warnOnMiss) {
   checkInput(mesh, params);
   ConversionResult result;
   result.report.inputVertices = static_cast<int>(mesh.vertices.size());
@@ -300,124 +302,11 @@ ConversionResult convertOnce(const TriangleMesh& mesh, const ConversionParams& p
   reportProgress(params.progress, 0.4);
   if (params.chooseLengths) {
     chooseLengthsAndCheck(params, result);
-    detail::fillHeights(mesh, params, keptTriangles, result, raise);
+    detail::fillHeights(mesh, params, keptTriangles, result, warnOnMiss);
   }
   copySummary(result);
   reportProgress(params.progress, 1.0);
   return result;
-}
-
-// Reductions tried for a tolerance, each with a smaller target raster spacing.
-constexpr int kReductionTries = 4;
-// Largest m the reduction runs at for a tolerance (then the edge bound shrinks instead).
-constexpr int kMaxReducedResolution = 32;
-
-/// Median edge length of the input triangles, mm: the input's own sampling of its surface, the
-/// first target raster spacing of a reduced support for a tolerance.
-double medianEdgeMm(const TriangleMesh& mesh) {
-  std::vector<double> lengths;
-  lengths.reserve(3 * mesh.triangles.size());
-  for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const double l = (mesh.vertices[t[(k + 1) % 3]] - mesh.vertices[t[k]]).norm();
-      if (l > 0.0 && std::isfinite(l)) lengths.push_back(l);
-    }
-  if (lengths.empty()) return 0.0;
-  const auto mid = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
-  std::nth_element(lengths.begin(), mid, lengths.end());
-  return *mid;
-}
-
-double worstMm(const ConversionResult& r) {
-  return std::max(r.accuracy.inputToDdfMm, r.accuracy.ddfToInputMm);
-}
-
-/// The factor the raster spacing must shrink by: the chord error falls with the square of the
-/// spacing, so by the root of the measured ratio (with a margin), at least by half.
-double spacingFactor(double worst, double tol) {
-  return std::clamp(0.9 * std::sqrt(tol / worst), 0.25, 0.5);
-}
-
-/// What keeps the best of the reduced tries from the tolerance, for accuracy.note.
-std::string reducedLimit(const ConversionResult& best, const std::string& stop, double prevWorst,
-                         int tries) {
-  std::string why = std::to_string(tries) + " reduced supports tried; " + stop;
-  if (best.unfilledPoints > 0)
-    return why + "; " + std::to_string(best.unfilledPoints) +
-           " stubbles miss the input and keep the support's position";
-  if (prevWorst > 0.0 && worstMm(best) > 0.5 * prevWorst)
-    return why + "; the distance falls no faster than the spacing (" + detail::mm(prevWorst) +
-           " -> " + detail::mm(worstMm(best)) +
-           "): a crease or sharp edge inside a support face, which the raster cuts at any spacing";
-  return why;
-}
-
-/// The next try's m and edge bound after a miss; false (with @p stop saying why) at a limit.
-bool nextTry(const ConversionResult& r, double tol, std::size_t maxPoints, int& m, double& edge,
-             std::string& stop) {
-  const double f = spacingFactor(worstMm(r), tol);
-  const int next = static_cast<int>(std::ceil((m - 1) / f)) + 1;
-  if (next <= kMaxReducedResolution) {
-    if (detail::storedRasterPoints(r.ddf.faceCount(), next) > maxPoints) {
-      stop = "the raster point limit (" + std::to_string(maxPoints) + ") stops m at " +
-             std::to_string(m);
-      return false;
-    }
-    m = next;
-    return true;
-  }
-  // Past that m the reduction's coverage checks (m^2 rays per new face) cost more than the
-  // smaller faces that a shorter edge bound gives.
-  edge *= f;
-  return true;
-}
-
-/// A reduced support for a tolerance: the raster spacing is what the tolerance needs, so the
-/// reduction runs with support edges bounded by (m - 1) x the target spacing, and a try that
-/// misses the tolerance reduces the input again at a larger m (then with a shorter edge bound).
-/// Raising m on one reduced support instead would leave stubbles unchecked: the reduction
-/// checks that they hit the input at its own m only.
-ConversionResult convertReducedForTolerance(const TriangleMesh& mesh,
-                                            const ConversionParams& params, double spacingMm) {
-  ConversionResult best;
-  double prevWorst = 0.0, bestPrevWorst = 0.0, lastWorst = 0.0;
-  int m = params.resolution;
-  double edge = (m - 1) * spacingMm;
-  if (params.reduction.maxEdgeMm > 0.0) edge = std::min(edge, params.reduction.maxEdgeMm);
-  std::string stop = "at most " + std::to_string(kReductionTries) + " tries";
-  int tries = 0;
-  while (tries < kReductionTries) {
-    ConversionParams p = params;
-    p.rasterSpacingMm = 0.0;
-    p.resolution = m;
-    p.reduction.maxEdgeMm = edge;
-    const double from = 1.0 - std::pow(0.5, tries);
-    const double to = tries + 1 == kReductionTries ? 1.0 : 1.0 - std::pow(0.5, tries + 1);
-    p.progress = detail::progressShare(params.progress, from, to);
-    ConversionResult r = convertOnce(mesh, p, false);
-    ++tries;
-    log(LogLevel::Info, "mesh conversion: reduced support with edges <= " + detail::mm(edge) +
-                            ": " + std::to_string(r.ddf.faceCount()) +
-                            " faces at m = " + std::to_string(m) + ", input -> DDF " +
-                            detail::mm(r.accuracy.inputToDdfMm) + " at " +
-                            detail::at(r.accuracy.worstInputPoint) + ", DDF -> input " +
-                            detail::mm(r.accuracy.ddfToInputMm) + ", " +
-                            std::to_string(r.unfilledPoints) + " stubbles missed");
-    prevWorst = lastWorst;
-    lastWorst = worstMm(r);
-    const bool stopHere = r.accuracy.toleranceMet ||
-                          !nextTry(r, params.toleranceMm, params.maxRasterPoints, m, edge, stop);
-    if (tries == 1 || lastWorst < worstMm(best)) best = std::move(r), bestPrevWorst = prevWorst;
-    if (stopHere) break;
-  }
-  best.accuracy.resolutionTries = tries;
-  if (!best.accuracy.toleranceMet) {
-    best.accuracy.note =
-        detail::toleranceNote(best.accuracy, reducedLimit(best, stop, bestPrevWorst, tries));
-    log(LogLevel::Warning, "mesh conversion: " + best.accuracy.note);
-  }
-  best.report.accuracy = best.accuracy;
-  return best;
 }
 
 }  // namespace
@@ -427,9 +316,11 @@ ConversionResult convertMeshToDdf(const TriangleMesh& mesh, const ConversionPara
       !params.chooseLengths)
     return convertOnce(mesh, params, true);
   checkInput(mesh, params);
-  const double spacing = params.rasterSpacingMm > 0.0 ? params.rasterSpacingMm : medianEdgeMm(mesh);
+  const double spacing =
+      params.rasterSpacingMm > 0.0 ? params.rasterSpacingMm : detail::medianEdgeMm(mesh);
   if (!(spacing > 0.0)) return convertOnce(mesh, params, true);
-  return convertReducedForTolerance(mesh, params, spacing);
+  return detail::convertReducedForTolerance(
+      params, spacing, [&](const ConversionParams& p) { return convertOnce(mesh, p, false); });
 }
 
 }  // namespace ddfcam::ddf

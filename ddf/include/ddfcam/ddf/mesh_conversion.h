@@ -62,18 +62,20 @@ struct ConversionParams {
   SupportReductionParams reduction;
   /// Accuracy, mm: when > 0 the raster spacing is chosen so that the represented surface lies
   /// within this distance of the input, measured both ways on sample points
-  /// (ConversionAccuracy). With the input as support, resolution (or the spacing rule's m when
-  /// rasterSpacingMm > 0) is the first try and each further try refills the same support at
-  /// (m - 1) x 1.5 to 4 (from the measured ratio, as the chord error falls with the square of the
-  /// spacing), up to m = 256 and maxRasterPoints, stopping early when the distance no longer
-  /// shrinks. With a reduced support every try reduces the input again, so that the reduction
-  /// checks its stubbles at the m they are used at: support edges at most (m - 1) x a target
-  /// spacing d (first d = rasterSpacingMm, or the median input edge length), m = resolution
-  /// first; a miss raises m (up to 32, and within maxRasterPoints) and then shortens the edge
-  /// bound, at most 4 tries; the best try is returned. A tolerance not met is reported
-  /// (accuracy.note, a warning, naming the limit: the point budget, the tries, stubbles that miss
-  /// the input, or a distance that falls no faster than the spacing, i.e. a crease or sharp edge
-  /// inside a support face), not thrown. Default 0 (resolution as given).
+  /// (ConversionAccuracy). resolution (or the spacing rule's m when rasterSpacingMm > 0) is the
+  /// first try and each further try refills the same support at (m - 1) x 1.5 to 4 (from the
+  /// measured ratio, as the chord error falls with the square of the spacing), up to m = 256
+  /// and maxRasterPoints, stopping early when the distance no longer shrinks (then the better
+  /// raster is kept). A reduced support is first reduced with support edges at most (m - 1) x a
+  /// target spacing d (d = rasterSpacingMm, or the median input edge length; m = resolution,
+  /// the m its stubbles are checked at), then refilled at larger m the same way; a larger m
+  /// whose fill has stubbles that miss the input is not taken. Where that does not meet the
+  /// tolerance the input is reduced again with the edge bound shortened by the measured ratio
+  /// (to a half to a quarter), at most 4 reductions; the best is returned. A tolerance not met
+  /// is reported (accuracy.note, a warning, naming the limit: the point budget, the tries,
+  /// stubbles that miss the input, or a distance that no longer shrinks with the resolution,
+  /// i.e. a crease or sharp edge inside a support face), not thrown. Default 0 (resolution as
+  /// given).
   double toleranceMm = 0.0;
   /// Target raster spacing, mm: when > 0 the resolution is the smallest m with
   /// longest support edge / (m - 1) <= rasterSpacingMm (the first try when toleranceMm > 0).
