@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <ddfcam/ddf/crust_hash.h>
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -76,7 +78,7 @@ Eigen::AlignedBox3d CrustHash::crustBox(const DisplacementField& ddf, int face) 
   return box;
 }
 
-void CrustHash::insertFace(const DisplacementField& ddf, int face) {
+std::vector<CrustHash::CellKey> CrustHash::faceKeys(const DisplacementField& ddf, int face) const {
   // Sub-volumes (fig. 5.2): the box of the six corners of a sub-triangle slab bounds the slab,
   // because at fixed h the slab section is the affine image of the sub-triangle.
   const Eigen::AlignedBox3d whole = crustBox(ddf, face);
@@ -107,9 +109,13 @@ void CrustHash::insertFace(const DisplacementField& ddf, int face) {
   }
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  for (CellKey k : keys) cells_[k].push_back(face);
   keys.shrink_to_fit();  // the sub-volume pass collected many duplicates
-  faceCells_[face] = std::move(keys);
+  return keys;
+}
+
+void CrustHash::insertFace(const DisplacementField& ddf, int face) {
+  faceCells_[face] = faceKeys(ddf, face);
+  for (CellKey k : faceCells_[face]) cells_[k].push_back(face);
 }
 
 void CrustHash::removeFace(int face) {
@@ -127,7 +133,11 @@ void CrustHash::rebuild(const DisplacementField& ddf) {
   cells_.clear();
   faceCells_.assign(ddf.faceCount(), {});
   cells_.reserve(static_cast<std::size_t>(ddf.faceCount()) * 4);
-  for (int f = 0; f < ddf.faceCount(); ++f) insertFace(ddf, f);
+  // The cells of each face are found in parallel (most of the cost); the table is filled in
+  // face order, so every cell lists its faces in ascending order as before.
+  tbb::parallel_for(0, ddf.faceCount(), [&](int f) { faceCells_[f] = faceKeys(ddf, f); });
+  for (int f = 0; f < ddf.faceCount(); ++f)
+    for (CellKey k : faceCells_[f]) cells_[k].push_back(f);
   for (auto& [k, list] : cells_) list.shrink_to_fit();
 }
 

@@ -17,7 +17,7 @@ Refusal SupportReducer::attempt(SupportMesh::EdgeHandle eh) {
   const int a = mesh_.from_vertex_handle(heh).idx(), b = mesh_.to_vertex_handle(heh).idx();
   if (kept_[a] || kept_[b] || mesh_.is_boundary(eh)) return Refusal::Boundary;
   Tentative t;
-  t.region = contractionRegion(mesh_, eh);
+  t.region = contractionRegion(mesh_, heh);
   if (const long since = edgeRefusedAt_[eh.idx()]; since >= 0 && unchangedSince(t.region, since))
     return Refusal::Skipped;
   if (isCriticalEdge(mesh_, heh)) return Refusal::Critical;
@@ -82,8 +82,12 @@ Refusal SupportReducer::placeNewVertex(Tentative& t) {
     t.point = mid;
     if (!buildFaces(t)) return Refusal::Critical;
   }
+  return checkEdgeLengths(t);
+}
+
+Refusal SupportReducer::checkEdgeLengths(const Tentative& t) const {
   if (params_.maxEdgeMm > 0.0)
-    for (int v : r.ring)
+    for (int v : t.region.ring)
       if ((toEigen(mesh_.point(SupportMesh::VertexHandle(v))) - t.point).norm() > params_.maxEdgeMm)
         return Refusal::EdgeLength;
   return Refusal::None;

@@ -42,30 +42,99 @@ void offerHit(const FaceCorners& face, int n, int i, int k, std::size_t idx, dou
   if (take) out.hit[idx] = item, out.h[idx] = h;
 }
 
-// Shoots every raster point of one (face, item) pair from the linear forms of sec. 5.2; at the
-// resolutions of the reduction a row holds too few points for the interval search of the cut
-// kernel to pay. Returns whether any ray hit within |h| <= 1.
+// Rows at least this long are first cut to the index ranges where a hit is possible (the
+// roots of the hit conditions, as the cut kernel does); on shorter rows the root finding costs
+// more than testing every point.
+constexpr int kIntervalRowLength = 12;
+
+// Tests the raster points first..last of row @p k of one (face, item) pair against the linear
+// forms of sec. 5.2 and offers the hits. Returns whether any ray hit within |h| <= 1.
+bool shootRow(const FaceCorners& face, int n, const PairForms& f, int k, int first, int last,
+              std::size_t rowStart, int item, const ReductionItems& items, FaceItems& out) {
+  const double nk = f.n.base + k * f.n.dk, dk = f.d.base + k * f.d.dk;
+  std::array<double, 3> ak, bk;
+  for (int j = 0; j < 3; ++j)
+    ak[j] = f.a[j].base + k * f.a[j].dk, bk[j] = f.b[j].base + k * f.b[j].dk;
+  bool any = false;
+  for (int i = first; i <= last; ++i) {
+    const double d = dk + i * f.d.di;
+    if (d == 0.0) continue;
+    const double h = (nk + i * f.n.di) / d;
+    if (!(std::abs(h) <= 1.0 - kHeightMargin)) continue;
+    bool inside = true;
+    for (int j = 0; j < 3 && inside; ++j)
+      inside = ak[j] + i * f.a[j].di + h * (bk[j] + i * f.b[j].di) >= -kLambdaTolerance;
+    if (!inside) continue;
+    any = true;
+    offerHit(face, n, i, k, rowStart + i, h, item, items, out);
+  }
+  return any;
+}
+
+// The index range of row @p k (length @p length) that can hold a hit, or false when none can:
+// where |h| <= 1, and where lambda_j = a_j + h b_j can reach -tol for every j. On a row without
+// a pole h is monotone, so it lies between its values at the range's ends; then lambda_j is at
+// most a_j + max(h_lo b_j, h_hi b_j), a maximum of two linear functions of i, largest at an end
+// of the range. Exact as a necessary condition, and far cheaper than the roots.
+bool rowRange(const PairForms& f, int k, int length, int& first, int& last) {
+  const double n0 = f.n.base + k * f.n.dk, d0 = f.d.base + k * f.d.dk;
+  const double last_ = length - 1;
+  const double dEnd = d0 + last_ * f.d.di;
+  first = 0, last = length - 1;
+  if (!(d0 * dEnd > 0.0)) return true;  // a pole or a zero in the row: no cheap bound
+  const double s = d0 > 0.0 ? 1.0 : -1.0;
+  double lo = 0.0, hi = last_;
+  // s (N - D) <= 0 and s (-N - D) <= 0, both linear in i.
+  for (const double sign : {1.0, -1.0}) {
+    const double g0 = s * (sign * n0 - d0), g1 = s * (sign * f.n.di - f.d.di);
+    if (g1 == 0.0) {
+      if (g0 > 0.0) return false;
+      continue;
+    }
+    const double root = -g0 / g1;
+    if (g1 > 0.0)
+      hi = std::min(hi, std::ceil(root) + 1.0);
+    else
+      lo = std::max(lo, std::floor(root) - 1.0);
+  }
+  if (lo > hi) return false;
+  first = static_cast<int>(lo), last = static_cast<int>(hi);
+  const auto hAt = [&](double i) {
+    return std::clamp((n0 + i * f.n.di) / (d0 + i * f.d.di), -1.0, 1.0);
+  };
+  const double hFirst = hAt(first), hLast = hAt(last);
+  for (int j = 0; j < 3; ++j) {
+    const double a0 = f.a[j].base + k * f.a[j].dk, b0 = f.b[j].base + k * f.b[j].dk;
+    const auto bound = [&](double i) {
+      const double b = b0 + i * f.b[j].di;
+      return a0 + i * f.a[j].di + std::max(hFirst * b, hLast * b);
+    };
+    if (bound(first) < -2.0 * kLambdaTolerance && bound(last) < -2.0 * kLambdaTolerance)
+      return false;
+  }
+  return true;
+}
+
+// Shoots the raster of one (face, item) pair row by row.
 bool shootPair(const FaceCorners& face, int n, const PairForms& f, int item,
                const ReductionItems& items, FaceItems& out) {
   bool any = false;
-  std::size_t idx = 0;
+  std::size_t rowStart = 0;
+  std::array<std::pair<int, int>, 5> ranges;
   for (int k = 0; k <= n; ++k) {
-    const double nk = f.n.base + k * f.n.dk, dk = f.d.base + k * f.d.dk;
-    std::array<double, 3> ak, bk;
-    for (int j = 0; j < 3; ++j)
-      ak[j] = f.a[j].base + k * f.a[j].dk, bk[j] = f.b[j].base + k * f.b[j].dk;
-    for (int i = 0; i <= n - k; ++i, ++idx) {
-      const double d = dk + i * f.d.di;
-      if (d == 0.0) continue;
-      const double h = (nk + i * f.n.di) / d;
-      if (!(std::abs(h) <= 1.0 - kHeightMargin)) continue;
-      bool inside = true;
-      for (int j = 0; j < 3 && inside; ++j)
-        inside = ak[j] + i * f.a[j].di + h * (bk[j] + i * f.b[j].di) >= -kLambdaTolerance;
-      if (!inside) continue;
-      any = true;
-      offerHit(face, n, i, k, idx, h, item, items, out);
+    const int length = n - k + 1;
+    int first = 0, last = 0;
+    if (rowRange(f, k, length, first, last)) {
+      if (last - first + 1 < kIntervalRowLength) {
+        any |= shootRow(face, n, f, k, first, last, rowStart, item, items, out);
+      } else {
+        const int count = rowIntervals(f, k, length, KernelMode::Fill, kLambdaTolerance, ranges);
+        for (int r = 0; r < count; ++r)
+          any |= shootRow(face, n, f, k, ranges[r].first, ranges[r].second, rowStart, item, items,
+                          out);
+      }
     }
+    rowStart += length;
   }
   return any;
 }

@@ -80,9 +80,9 @@ bool isCriticalEdge(SupportMesh& mesh, SupportMesh::HalfedgeHandle heh) {
   return !mesh.is_collapse_ok(heh);
 }
 
-ContractionRegion contractionRegion(const SupportMesh& mesh, SupportMesh::EdgeHandle eh) {
+ContractionRegion contractionRegion(const SupportMesh& mesh, SupportMesh::HalfedgeHandle heh) {
   ContractionRegion r;
-  r.heh = mesh.halfedge_handle(eh, 0);
+  r.heh = heh;
   r.a = mesh.from_vertex_handle(r.heh).idx();
   r.b = mesh.to_vertex_handle(r.heh).idx();
   r.removed = {mesh.face_handle(r.heh).idx(),

@@ -33,8 +33,9 @@ struct ContractionRegion {
   std::vector<int> neighbours;      ///< faces at a ring vertex outside the region
 };
 
-/// @brief The region of the contraction of interior edge @p eh.
-ContractionRegion contractionRegion(const SupportMesh& mesh, SupportMesh::EdgeHandle eh);
+/// @brief The region of the contraction of the interior edge of @p heh, which removes its
+/// from-vertex and keeps its to-vertex.
+ContractionRegion contractionRegion(const SupportMesh& mesh, SupportMesh::HalfedgeHandle heh);
 
 /// @brief The vertex indices of face @p face in the order of its halfedges.
 std::array<int, 3> faceVertexIds(const SupportMesh& mesh, int face);

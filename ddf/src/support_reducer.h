@@ -62,6 +62,7 @@ class SupportReducer {
   Refusal attempt(SupportMesh::EdgeHandle eh);
   bool unchangedSince(const ContractionRegion& r, long since) const;
   Refusal placeNewVertex(Tentative& t);
+  Refusal checkEdgeLengths(const Tentative& t) const;
   Refusal evaluate(Tentative& t, double capScale);
   bool buildFaces(Tentative& t) const;
   Refusal chooseVector(Tentative& t, double capScale);

@@ -163,7 +163,9 @@ TEST(SupportReduction, BoundaryAndLabelBordersAreKeptExactly) {
   for (const auto vh : grid.vertices()) {
     const auto p = grid.point(vh);
     const bool border = grid.is_boundary(vh) || p[0] == 4.0;
-    if (border) EXPECT_TRUE(kept.count({p[0], p[1], p[2]})) << p[0] << " " << p[1];
+    if (border) {
+      EXPECT_TRUE(kept.count({p[0], p[1], p[2]})) << p[0] << " " << p[1];
+    }
   }
   ASSERT_EQ(r.faceLabels.size(), r.support.n_faces());
   for (const auto fh : r.support.faces()) {

@@ -69,6 +69,7 @@ class CrustHash {
   CellKey key(const Eigen::Vector3i& cell) const;
   Eigen::Vector3i cellOf(const Vec3& p) const;
   void insertFace(const DisplacementField& ddf, int face);
+  std::vector<CellKey> faceKeys(const DisplacementField& ddf, int face) const;
   void removeFace(int face);
   void collectCells(const Eigen::AlignedBox3d& box, std::vector<CellKey>& keys) const;
   void gatherFaces(const std::vector<CellKey>& keys, std::vector<int>& out) const;

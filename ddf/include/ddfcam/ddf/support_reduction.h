@@ -36,8 +36,8 @@ struct SupportReductionParams {
   /// The angle bound, degrees. Default 45.
   double maxAngleDeg = 45.0;
   /// Feature edges: an input edge whose two faces' normals differ by more than this angle,
-  /// degrees, is kept like a boundary edge (its vertices are never moved), so no support face
-  /// spans a sharp edge, which a raster can only cut at a distance proportional to its
+  /// degrees, is kept like a boundary edge (its vertices are never moved or removed), so no support
+  /// face spans a sharp edge, which a raster can only cut at a distance proportional to its
   /// spacing. 180 switches it off (the dissertation's runs). Default 40.
   double featureAngleDeg = 40.0;
   /// Longest support edge the reduction may create, mm (0 = no limit). Default 0.
@@ -64,7 +64,7 @@ struct SupportReductionReport {
   int rejectedContainment = 0;    ///< refused: an item height outside [-1, 1]
   int rejectedUniqueProjection = 0;  ///< refused: h0 < 1 or a non-adjacent crust conflict
   int rejectedAngle = 0;             ///< refused by the angle bound
-  double seconds = 0.0;              ///< wall time of the reduction
+  double seconds = 0.0;              ///< wall time of the reduction, set-up included
 };
 
 /// @brief The reduced support with its vectors and, per face, the input label it carries.
