@@ -156,35 +156,61 @@ std::string mm(double value) {
   return s.str();
 }
 
+// A meeting of crusts that pulled the limit's face back: its own, or that of a face sharing a
+// vertex with it, as the partner face and the text naming the pair.
+std::string meetingOf(const detail::CrustPlan& plan, const DisplacementField& fitted,
+                      StockLimit& limit) {
+  const auto& fv = fitted.faceVertices(limit.face);
+  const int own = plan.facePartner[limit.face];
+  if (own >= 0) {
+    limit.otherFace = own;
+    return "its crust would meet the crust of support face " + std::to_string(own);
+  }
+  for (int v : fv) {
+    if (plan.s[v] >= 1.0) continue;
+    for (int f : fitted.topology().vertexFaces(v))
+      if (plan.facePartner[f] >= 0) {
+        limit.otherFace = plan.facePartner[f];
+        return "its vertex " + std::to_string(v) + " is shared with support face " +
+               std::to_string(f) + ", whose crust would meet the crust of support face " +
+               std::to_string(limit.otherFace);
+      }
+  }
+  return {};
+}
+
 // Why the crust of the limit's face stays short, as the end of the refusal; sets the cause.
 std::string limitCause(const detail::CrustPlan& plan, const DisplacementField& fitted,
                        const TriangleMesh& input, double reachMm, StockLimit& limit) {
   const auto& fv = fitted.faceVertices(limit.face);
   const double inf = std::numeric_limits<double>::infinity();
-  const double radius = concaveRadiusNear(input, limit.point, 0.5 * reachMm);
+  // A smooth concave region shows in the curvature fit over the allowance, a sharp concave
+  // crease (which that fit smooths away) in the turn of the input's triangles across an edge.
+  const double radius = std::min(concaveRadiusNear(input, limit.point, 0.5 * reachMm),
+                                 detail::creaseRadiusNear(input, limit.point, reachMm));
   limit.concaveRadiusMm = inf;
   if (radius <= reachMm) {
     limit.concaveRadiusMm = radius;
-    return "the surface is concave there with radius " + mm(radius) + " mm";
+    return "the surface is concave there with radius " + mm(radius) + " mm (within " + mm(reachMm) +
+           " mm of the point)";
   }
   bool capped = false, folded = false;
   double cap = inf, cosN = 1.0;
   for (int v : fv) {
-    if (plan.partner[v] >= 0 && plan.s[v] < 1.0) limit.otherFace = plan.partner[v];
     folded |= plan.shrunkByFace[v] && plan.s[v] < 1.0;
     capped |= plan.hiT[v] >= plan.capTop[v] * (1.0 - 1e-9);
     cap = std::min(cap, plan.capTop[v]);
     cosN = std::min(cosN, plan.cosN[v]);
   }
-  if (limit.otherFace >= 0)
-    return "its crust would meet the crust of support face " + std::to_string(limit.otherFace) +
-           " (a neighbouring sheet across a gap, or the other side of a thin wall)";
+  const std::string meeting = meetingOf(plan, fitted, limit);
+  if (!meeting.empty())
+    return meeting + " (a neighbouring sheet across a gap, or the other side of a thin wall)";
   if (folded) return "the crust of the moved support would fold there (crust height below 1)";
   if (capped)
     return "the support's crust cannot reach further out there (" + mm(cap) +
            " mm from the support, the vector " + mm(std::acos(cosN) * 180.0 / M_PI) +
            " degrees off the surface normal) although the input is not concave within " +
-           mm(0.5 * reachMm) + " mm; a finer support may hold it";
+           mm(reachMm) + " mm; a finer support may hold it";
   return "the crust could not be lengthened enough there in the correction passes";
 }
 

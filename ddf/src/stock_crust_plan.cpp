@@ -145,7 +145,7 @@ CrustPlan makeCrustPlan(const DisplacementField& ddf, const StockCrustParams& pa
   plan.s.assign(nv, 1.0);
   plan.sBelow.assign(nv, 1.0);
   plan.shrunkByFace.assign(nv, 0);
-  plan.partner.assign(nv, -1);
+  plan.facePartner.assign(ddf.faceCount(), -1);
   plan.changed.assign(nv, 1);
   return plan;
 }
@@ -239,8 +239,8 @@ std::size_t conflictRound(const DisplacementField& ddf, CrustPlan& plan, double 
           continue;
         }
         if (plan.s[v] > 0.0) pullBack(plan, v, factor);
-        plan.partner[v] = pair[1 - side];
       }
+    for (int side = 0; side < 2; ++side) plan.facePartner[pair[side]] = pair[1 - side];
   }
   equalizeClasses(plan);
   return live;

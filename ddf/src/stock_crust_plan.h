@@ -24,7 +24,7 @@ struct CrustPlan {
   std::vector<double> hiT, loT, s;
   std::vector<double> sBelow;      // the same blend for the bottom: pulled back first on a conflict
   std::vector<char> shrunkByFace;  // pulled back for the crust heights of a face
-  std::vector<int> partner;        // face whose crust conflicted with one of its faces
+  std::vector<int> facePartner;    // per face: a face whose crust met its crust, or -1
   std::vector<int> vertexClass;    // coincident-vertex classes (smallest index)
   std::vector<double> faceThreshold;  // crust height each fitted face must keep
   std::vector<char> changed;          // moved since the last conflict round
@@ -68,6 +68,14 @@ DisplacementField buildField(const DisplacementField& ddf, const CrustPlan& plan
 /// that involves a vertex with s > 0. Returns the number of rounds.
 int resolveConflicts(const DisplacementField& ddf, CrustPlan& plan, int maxRounds,
                      const ProgressCallback& progress);
+
+/// Radius of the tightest concave crease of @p mesh within @p withinMm of @p point, mm (+inf
+/// where none): per interior edge whose two triangles turn towards their front side by the
+/// angle a, 1.5 times the sum of their centroids' distances from the edge line over a (the
+/// width of the two half facets over their turn: a faceted cylinder of radius r gives about
+/// r sin(pi/N) / (pi/N) where the triangles span a facet, a sharp crease of two triangles of
+/// height t about 2 t / pi x their turn's ratio to 90 degrees).
+double creaseRadiusNear(const TriangleMesh& mesh, const Vec3& point, double withinMm);
 
 /// Reach above per stored raster point of @p ddf, mm (as crustReach).
 std::vector<double> reachAbovePerPoint(const DisplacementField& ddf);

@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 #include <vector>
 
 namespace ddfcam::ddf {
@@ -138,6 +140,44 @@ double concaveRadiusNear(const TriangleMesh& mesh, const Vec3& point, double nei
   // Rounding leaves a flat direction (a cylinder's axis) slightly curved either way.
   const double flat = 1e-9 * std::max(eig.cwiseAbs().maxCoeff(), 1.0 / neighbourhoodMm);
   return eig(0) < -flat ? -1.0 / eig(0) : std::numeric_limits<double>::infinity();
+}
+
+double detail::creaseRadiusNear(const TriangleMesh& mesh, const Vec3& point, double withinMm) {
+  // Directed edge (a, b) -> triangle; the twin (b, a) is the neighbour across it.
+  std::map<std::pair<int, int>, int> edges;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int j = 0; j < 3; ++j)
+      edges[{mesh.triangles[t][j], mesh.triangles[t][(j + 1) % 3]}] = static_cast<int>(t);
+  const auto normalOf = [&](int t) {
+    const auto& tri = mesh.triangles[t];
+    const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
+    return Vec3((b - a).cross(c - a));
+  };
+  const auto centroidOf = [&](int t) {
+    const auto& tri = mesh.triangles[t];
+    return Vec3((mesh.vertices[tri[0]] + mesh.vertices[tri[1]] + mesh.vertices[tri[2]]) / 3.0);
+  };
+  double tightest = std::numeric_limits<double>::infinity();
+  for (const auto& [edge, t] : edges) {
+    const auto twin = edges.find({edge.second, edge.first});
+    if (edge.first > edge.second || twin == edges.end()) continue;
+    const Vec3 a = mesh.vertices[edge.first], b = mesh.vertices[edge.second];
+    if (((a + b) / 2.0 - point).norm() > withinMm) continue;
+    const Vec3 n1 = normalOf(t), n2 = normalOf(twin->second);
+    if (!(n1.norm() > 0.0 && n2.norm() > 0.0)) continue;
+    const double angle = std::acos(std::clamp(n1.normalized().dot(n2.normalized()), -1.0, 1.0));
+    const Vec3 c1 = centroidOf(t), c2 = centroidOf(twin->second);
+    if (angle < 1e-6 || (c2 - c1).dot(n1) <= 0.0) continue;  // flat, or convex across the edge
+    // A centroid lies a third of its triangle's height off the edge; 1.5 times that is half
+    // the height, the facet's middle on a faceted circle.
+    const Vec3 axis = (b - a).normalized();
+    const auto offEdge = [&](const Vec3& c) {
+      const Vec3 d = c - a;
+      return (d - d.dot(axis) * axis).norm();
+    };
+    tightest = std::min(tightest, 1.5 * (offEdge(c1) + offEdge(c2)) / angle);
+  }
+  return tightest;
 }
 
 }  // namespace ddfcam::ddf
