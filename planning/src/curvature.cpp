@@ -167,6 +167,7 @@ CurvatureField computeCurvature(const ddf::DisplacementField& ddf, const Curvatu
     VertexCurvatureParams vertexParams;
     vertexParams.umbilicTolerance = params.umbilicTolerance;
     vertexParams.flatCurvaturePerMm = params.flatCurvaturePerMm;
+    vertexParams.faceLabels = params.faceLabels;
     vertexParams.parallel = params.parallel;
     vertexParams.progress = params.progress;
     return computeVertexCurvature(ddf, vertexParams);

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -136,6 +138,88 @@ TEST(VertexCurvature, CylinderSignsFollowTheToolSide) {
   }
   EXPECT_LT(worstOut, 0.02 / r);
   EXPECT_LT(worstIn, 0.02 / r);
+}
+
+// Cylinder of radius r along z tessellated as a CAD exporter does: one strip of nu long
+// triangles between the two end circles, no interior vertex. With @p twisted the top circle is
+// turned by half a segment, so that no edge runs along a generator (an antiprism strip).
+ddf::TriangleMesh cylinderStrip(double r, double length, int nu, bool twisted) {
+  ddf::TriangleMesh mesh;
+  for (int k = 0; k <= 1; ++k)
+    for (int i = 0; i < nu; ++i) {
+      const double u = 2 * kPi * (i + (twisted && k == 1 ? 0.5 : 0.0)) / nu;
+      mesh.vertices.emplace_back(r * std::cos(u), r * std::sin(u), length * k);
+    }
+  for (int i = 0; i < nu; ++i) {
+    const int a = i, b = (i + 1) % nu, c = nu + (i + 1) % nu, d = nu + i;
+    mesh.triangles.push_back({a, b, twisted ? d : c});
+    mesh.triangles.push_back(twisted ? std::array<int, 3>{b, c, d} : std::array<int, 3>{a, c, d});
+  }
+  return mesh;
+}
+
+TEST(VertexCurvature, LongStripsWithoutInteriorVerticesGiveTheCylinderCurvature) {
+  // r = 5 mm, 48 segments (h = 0.65 mm), 40 mm long: aspect 61. The vertices lie on two
+  // circles only, so a fit to them alone cannot tell an axial slope from an axial curvature;
+  // the straight strips pin the axial curvature at 0. A quadric fit around the circle is exact
+  // up to O((h / r)^2) ~ 1.7 % of 1/r, hence 3 %; directions within 0.01 rad of the circle.
+  const double r = 5.0;
+  for (const bool twisted : {false, true}) {
+    const ddf::DisplacementField ddf = convert(cylinderStrip(r, 40.0, 48, twisted));
+    const CurvatureField c = computeCurvature(ddf);
+    ASSERT_EQ(c.method, CurvatureMethod::VertexQuadricFit);
+    double k1 = 0.0, k2 = 0.0, angle = 0.0;
+    int umbilic = 0;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      k1 = std::max(k1, std::abs(c.kMax[i] - 1.0 / r));
+      k2 = std::max(k2, std::abs(double{c.kMin[i]}));
+      angle = std::max(angle, std::asin(std::min(1.0, std::abs(c.dirMax[i].normalized().z()))));
+      umbilic += c.umbilic[i];
+    }
+    std::printf(
+        "cylinder strips%s: |k_max - 1/r| max %.3g, |k_min| max %.3g 1/mm, k_max "
+        "direction off the circle max %.3g rad\n",
+        twisted ? " (twisted)" : "", k1, k2, angle);
+    EXPECT_LT(k1, 0.03 / r) << twisted;
+    EXPECT_LT(k2, 0.03 / r) << twisted;
+    EXPECT_LT(angle, 0.01) << twisted;
+    EXPECT_EQ(umbilic, 0) << twisted;
+  }
+}
+
+TEST(VertexCurvature, FitsStayOnOneSideOfACrease) {
+  // A closed cylinder: the strips meet flat end caps at a right angle. Fits across that edge
+  // would mix the caps' zero curvature into the cylinder's; the cylinder side must still get
+  // 1/r and 0 at every raster point, the caps 0.
+  const double r = 5.0, length = 40.0;
+  const int nu = 48;
+  ddf::TriangleMesh mesh = cylinderStrip(r, length, nu, false);
+  const int bottom = static_cast<int>(mesh.vertices.size());
+  mesh.vertices.emplace_back(0.0, 0.0, 0.0);
+  mesh.vertices.emplace_back(0.0, 0.0, length);
+  for (int i = 0; i < nu; ++i) {
+    mesh.triangles.push_back({bottom, (i + 1) % nu, i});
+    mesh.triangles.push_back({bottom + 1, nu + i, nu + (i + 1) % nu});
+  }
+  const ddf::DisplacementField ddf = convert(mesh);
+  const CurvatureField c = computeCurvature(ddf);
+  double side = 0.0, cap = 0.0;
+  const int n = ddf.raster().steps();
+  for (int f = 0; f < ddf.faceCount(); ++f) {
+    const Vec3 centre = ddf.surfacePoint(f, n / 3, n / 3);
+    const bool onCap = std::hypot(centre.x(), centre.y()) < 0.9 * r;
+    for (int k = 0; k <= n; ++k)
+      for (int i = 0; i <= n - k; ++i) {
+        const std::size_t at =
+            static_cast<std::size_t>(f) * ddf.pointsPerFace() + ddf.raster().index(i, k);
+        if (onCap)
+          cap = std::max({cap, std::abs(double{c.kMax[at]}), std::abs(double{c.kMin[at]})});
+        else
+          side = std::max({side, std::abs(c.kMax[at] - 1.0 / r), std::abs(double{c.kMin[at]})});
+      }
+  }
+  EXPECT_LT(side, 0.03 / r);
+  EXPECT_LT(cap, 0.03 / r);
 }
 
 TEST(VertexCurvature, FlatFacesAreRecognised) {

@@ -21,6 +21,7 @@
 #include <gp_Pnt2d.hxx>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 
@@ -48,6 +49,29 @@ struct FaceEntry {
     return (p.cwiseMax(boxMin).cwiseMin(boxMax) - p).norm();
   }
 };
+
+/// The parameter box the surface feet are searched in: the face's box widened by a share of
+/// its span (within the surface's own bounds where it is not periodic). Extrema drops a foot
+/// more than 1e-9 outside its box, and a point on a face border often has its foot there by
+/// rounding (on sliced_cylinder.step's bottom circle: a fifth of its cylinders' raster points at
+/// m = 5 had no foot). Widening cannot hide a closer point: a foot outside the face is
+/// classified as such and only bounds the face's distance from below.
+std::array<double, 4> searchBox(const FaceEntry& entry) {
+  constexpr double kShare = 0.05;
+  double su0, su1, sv0, sv1;
+  entry.surface->Bounds(su0, su1, sv0, sv1);
+  const double du = kShare * (entry.u1 - entry.u0), dv = kShare * (entry.v1 - entry.v0);
+  std::array<double, 4> box = {entry.u0 - du, entry.u1 + du, entry.v0 - dv, entry.v1 + dv};
+  if (!entry.surface->IsUPeriodic()) {
+    box[0] = std::max(box[0], su0);
+    box[1] = std::min(box[1], su1);
+  }
+  if (!entry.surface->IsVPeriodic()) {
+    box[2] = std::max(box[2], sv0);
+    box[3] = std::min(box[3], sv1);
+  }
+  return box;
+}
 
 }  // namespace
 
@@ -110,8 +134,9 @@ CadSurfaceQuery::CadSurfaceQuery(const CadModel& model) : impl_(std::make_unique
     entry.boxMin = {x0, y0, z0};
     entry.boxMax = {x1, y1, z1};
     BRepTools::UVBounds(entry.face, entry.u0, entry.u1, entry.v0, entry.v1);
+    const auto [u0, u1, v0, v1] = searchBox(entry);
     entry.projector = std::make_unique<GeomAPI_ProjectPointOnSurf>();
-    entry.projector->Init(entry.surface, entry.u0, entry.u1, entry.v0, entry.v1);
+    entry.projector->Init(entry.surface, u0, u1, v0, v1);
     entry.classifier =
         std::make_unique<BRepTopAdaptor_FClass2d>(entry.face, BRep_Tool::Tolerance(entry.face));
     impl_->faces.push_back(std::move(entry));

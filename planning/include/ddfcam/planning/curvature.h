@@ -36,6 +36,9 @@ struct CurvatureParams {
   /// Curvature below which both directions count as meaningless (a plane is isotropic),
   /// 1/mm (default 1e-6).
   double flatCurvaturePerMm = 1e-6;
+  /// VertexQuadricFit only: per support face a label such as its CAD face, or empty
+  /// (VertexCurvatureParams::faceLabels; default empty).
+  std::vector<int> faceLabels;
   /// Process faces in parallel with TBB (default true).
   bool parallel = true;
   /// Progress in [0, 1]; returning false cancels (default: none).
@@ -90,7 +93,8 @@ int automaticCurvatureStep(int m);
 /// With params.method VertexQuadricFit, or Automatic on a DDF whose faces are all flat, the
 /// result is computeVertexCurvature() instead (params.step is then not used).
 /// @throws InvalidInput if params.step < 0 or the step is too large for the raster (3 d > m-1
-/// needs m >= 4 and d <= (m - 1) / 3), or the DDF has no faces.
+/// needs m >= 4 and d <= (m - 1) / 3), the DDF has no faces, or params.faceLabels has a size
+/// other than 0 or the face count (vertex fit).
 /// @throws Cancelled if params.progress asks to stop.
 CurvatureField computeCurvature(const ddf::DisplacementField& ddf,
                                 const CurvatureParams& params = {});
