@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <mutex>
 
+#include "../support/support_triangles.h"
 #include "../support/test_meshes.h"
 
 namespace ddfcam::ddf {
@@ -35,18 +36,6 @@ double pointTriangleDistance(const Vec3& p, const Vec3& a, const Vec3& b, const 
     return (p - (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))))).norm();
   const double denom = 1.0 / (va + vb + vc);
   return (p - (a + ab * (vb * denom) + ac * (vc * denom))).norm();
-}
-
-TriangleMesh toTriangleMesh(const SupportMesh& mesh) {
-  TriangleMesh out;
-  for (const auto vh : mesh.vertices()) out.vertices.push_back(toEigen(mesh.point(vh)));
-  for (const auto fh : mesh.faces()) {
-    std::array<int, 3> t;
-    int k = 0;
-    for (const auto vh : mesh.fv_range(fh)) t[k++] = vh.idx();
-    out.triangles.push_back(t);
-  }
-  return out;
 }
 
 /// Every triangle with its own three vertices, as an STL file stores them.
@@ -81,7 +70,7 @@ class LogCapture {
 };
 
 TEST(MeshConversion, UnweldedOctahedronBecomesAValidClosedDdf) {
-  const auto input = unwelded(toTriangleMesh(test::octahedronMesh(2.0)));
+  const auto input = unwelded(test::supportTriangles(test::octahedronMesh(2.0)));
   const auto result = convertMeshToDdf(input);
   EXPECT_EQ(result.report.weldedVertices, 24 - 6);
   EXPECT_EQ(result.report.droppedFaces, 0);
@@ -97,7 +86,7 @@ TEST(MeshConversion, UnweldedOctahedronBecomesAValidClosedDdf) {
 }
 
 TEST(MeshConversion, DropsNonManifoldAndDegenerateTrianglesWithAWarning) {
-  auto input = toTriangleMesh(test::gridMesh(3, 3));
+  auto input = test::supportTriangles(test::gridMesh(3, 3));
   // A fin on the interior edge (5, 10): a third face on an edge. A triangle with a repeated
   // vertex.
   input.vertices.push_back({1.5, 1.5, 1.0});
@@ -122,10 +111,11 @@ TEST(MeshConversion, RejectsBadInput) {
   EXPECT_THROW(convertMeshToDdf(bad), InvalidInput);
   ConversionParams params;
   params.resolution = 1;
-  EXPECT_THROW(convertMeshToDdf(toTriangleMesh(test::gridMesh(1, 1)), params), InvalidInput);
+  EXPECT_THROW(convertMeshToDdf(test::supportTriangles(test::gridMesh(1, 1)), params),
+               InvalidInput);
   params.resolution = 4;
   params.progress = [](double) { return false; };
-  EXPECT_THROW(convertMeshToDdf(toTriangleMesh(test::gridMesh(1, 1)), params), Cancelled);
+  EXPECT_THROW(convertMeshToDdf(test::supportTriangles(test::gridMesh(1, 1)), params), Cancelled);
 }
 
 TEST(MeshConversion, BunnyConvertsToAValidDdf) {
@@ -134,7 +124,7 @@ TEST(MeshConversion, BunnyConvertsToAValidDdf) {
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared mesh data not present";
   SupportMesh bunny;
   ASSERT_TRUE(OpenMesh::IO::read_mesh(bunny, path.string()));
-  const auto input = toTriangleMesh(bunny);
+  const auto input = test::supportTriangles(bunny);
   ConversionParams params;
   params.resolution = 4;
   const auto result = convertMeshToDdf(input, params);
