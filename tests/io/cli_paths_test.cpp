@@ -21,6 +21,7 @@
 #include <sstream>
 
 #include "cli_simulate_support.h"
+#include "rs274_run.h"
 
 namespace ddfcam::io {
 namespace {
@@ -105,8 +106,7 @@ TEST(CliPaths, EverySharedPathFileConvertsToCsvAndAptAndReadsBack) {
 
 TEST(CliPaths, VariableAxisProgramAsFiveAxisGCodeIsAcceptedByRs274) {
   SKIP_WITHOUT_SHARED_PATHS();
-  const fs::path rs274 = "/usr/bin/rs274";
-  if (!fs::exists(rs274))
+  if (!fs::exists(test::kRs274Path))
     GTEST_SKIP() << "rs274 (Debian package linuxcnc-uspace) not installed: the G-code is not "
                     "checked by a strict interpreter";
   test::ScratchDir dir;
@@ -120,17 +120,12 @@ TEST(CliPaths, VariableAxisProgramAsFiveAxisGCodeIsAcceptedByRs274) {
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const std::string ngc = test::readBytes(dir / "v.ngc");
   EXPECT_THAT(ngc, HasSubstr("G21"));
-  const std::string command = rs274.string() + " -g '" + (dir / "v.ngc").string() + "' > '" +
-                              (dir / "rs.out").string() + "' 2> '" + (dir / "rs.err").string() +
-                              "' < /dev/null";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << test::readBytes(dir / "rs.err");
-  std::istringstream errors(test::readBytes(dir / "rs.err"));
-  for (std::string line; std::getline(errors, line);)
-    EXPECT_TRUE(line.empty() || line == "executing") << line;
+  const test::Rs274Run rs = test::runRs274(ngc);
+  ASSERT_EQ(rs.exitCode, 0) << rs.errors;
+  EXPECT_EQ(rs.errors, "");
   // One canonical move per program point, plus the writer's rapid to the safe plane, the one
   // over the first point and the final retract (gcode_writer.h).
-  std::istringstream calls(test::readBytes(dir / "rs.out"));
+  std::istringstream calls(rs.out);
   std::size_t moves = 0;
   for (std::string line; std::getline(calls, line);)
     moves += line.find("STRAIGHT_") != std::string::npos ? 1 : 0;

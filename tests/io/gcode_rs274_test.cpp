@@ -12,50 +12,18 @@
 #include <numbers>
 #include <sstream>
 
-#include <sys/wait.h>
-#include <unistd.h>
+#include "rs274_run.h"
 
 namespace ddfcam::io {
 namespace {
 
 namespace fs = std::filesystem;
 constexpr double kPi = std::numbers::pi;
-const fs::path kRs274 = "/usr/bin/rs274";
+using test::kRs274Path;
+using test::Rs274Run;
+using test::runRs274;
 
 using Axes = std::array<double, 6>;  ///< X Y Z A B C
-
-struct Rs274Run {
-  int exitCode = -1;
-  std::string out;     ///< canonical calls
-  std::string errors;  ///< stderr without the "executing" banner
-};
-
-std::string readAll(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-Rs274Run runRs274(const std::string& program, const std::string& name) {
-  // Tests may run in parallel processes (ctest -j): the process id keeps the files apart.
-  const fs::path base =
-      fs::temp_directory_path() / ("ddfcam_rs274_" + name + "_" + std::to_string(::getpid()));
-  const fs::path ngc = base.string() + ".ngc";
-  const fs::path out = base.string() + ".out";
-  const fs::path err = base.string() + ".err";
-  std::ofstream(ngc, std::ios::binary) << program;
-  const std::string command = kRs274.string() + " -g '" + ngc.string() + "' > '" + out.string() +
-                              "' 2> '" + err.string() + "' < /dev/null";
-  Rs274Run run;
-  const int status = std::system(command.c_str());
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.out = readAll(out);
-  std::istringstream lines(readAll(err));
-  for (std::string line; std::getline(lines, line);) {
-    if (line != "executing" && !line.empty()) run.errors += line + "\n";
-  }
-  for (const fs::path& p : {ngc, out, err}) fs::remove(p);
-  return run;
-}
 
 /// End points of STRAIGHT_TRAVERSE / STRAIGHT_FEED canonical calls, in order.
 std::vector<Axes> canonicalMoves(const std::string& out) {
@@ -131,7 +99,7 @@ const planning::Tool kBall{
     .name = "ball 6", .kind = planning::ToolKind::BallEnd, .radiusMm = 3.0, .widthMm = 12.0};
 
 #define DDFCAM_REQUIRE_RS274()                                                          \
-  if (!fs::exists(kRs274)) {                                                            \
+  if (!fs::exists(kRs274Path)) {                                                        \
     GTEST_SKIP() << "rs274 (Debian package linuxcnc-uspace) not installed: the G-code " \
                     "is not checked by an independent interpreter";                     \
   }
@@ -140,7 +108,7 @@ TEST(GCodeRs274, ThreeAxisProgramIsAcceptedAndMovesAsWritten) {
   DDFCAM_REQUIRE_RS274();
   const ClProgram program = sphereProgram(300, false);
   const std::string text = encodeGCode(program, kBall, {});
-  const Rs274Run run = runRs274(text, "three_axis");
+  const Rs274Run run = runRs274(text);
   EXPECT_EQ(run.exitCode, 0);
   EXPECT_EQ(run.errors, "");
   const std::vector<Axes> canonical = canonicalMoves(run.out);
@@ -165,7 +133,7 @@ TEST_P(GCodeRs274FiveAxis, ProgramIsAcceptedAndMovesAsWritten) {
   params.kinematics.rotaryOffsetMm = {0.0, 4.0, 0.0};
   params.lineNumbers = true;
   const std::string text = encodeGCode(sphereProgram(300, true), kBall, params);
-  const Rs274Run run = runRs274(text, "five_axis");
+  const Rs274Run run = runRs274(text);
   EXPECT_EQ(run.exitCode, 0);
   EXPECT_EQ(run.errors, "");
   const std::vector<Axes> canonical = canonicalMoves(run.out);
@@ -187,7 +155,7 @@ TEST_P(GCodeRs274FiveAxis, InverseTimeProgramIsAccepted) {
   params.kinematics.pair = GetParam();
   params.inverseTimeFeed = true;
   const std::string text = encodeGCode(sphereProgram(300, true), kBall, params);
-  const Rs274Run run = runRs274(text, "inverse_time");
+  const Rs274Run run = runRs274(text);
   EXPECT_EQ(run.exitCode, 0);
   EXPECT_EQ(run.errors, "");
   EXPECT_NE(run.out.find("feed mode set to inverse time"), std::string::npos);
@@ -205,7 +173,7 @@ TEST(GCodeRs274, InterpreterRejectsABadLine) {
   // Proves the check above can fail: a Q word without a canned cycle is an error in RS274NGC.
   std::string text = encodeGCode(sphereProgram(20, false), kBall, {});
   text.insert(text.find("M5 M9"), "G1 X0 Y0 Z40 Q5\n");
-  const Rs274Run run = runRs274(text, "bad_line");
+  const Rs274Run run = runRs274(text);
   EXPECT_TRUE(run.exitCode != 0 || !run.errors.empty());
   EXPECT_NE(run.errors.find("Q word"), std::string::npos) << run.errors;
 }
