@@ -3,6 +3,8 @@
 // Part, Segmentation, Streamlines and Spacing refinement panels call the library.
 #include "job_stages.h"
 
+#include "unit_options.h"
+
 #include <ddfcam/error.h>
 #include <ddfcam/io/project_file.h>
 #include <ddfcam/io/project_loader.h>
@@ -132,8 +134,13 @@ planning::Project loadJobProject(const JobSpec& spec) {
     io::LoadPartParams params;
     params.conversion = spec.part.conversion;
     params.unit = spec.part.unit;
-    project = io::openProject(spec.part.file, params);
+    io::LoadPartReport report;
+    project = io::openProject(spec.part.file, params, &report);
     if (!project.part) throw InvalidInput(spec.part.file.string() + " holds no part");
+    // A CAD file states its unit, so its size needs no second opinion.
+    if (report.converted && !report.unitFromFile)
+      warnIfOtherUnit(spec.part.file, report.fileDiagonal, params.unit,
+                      "set \"units\" in the job's \"part\" object");
   }
   project.regions.clear();
   project.paths.clear();

@@ -4,6 +4,9 @@
 
 #include "console.h"
 
+#include <ddfcam/error.h>
+#include <ddfcam/io/project_loader.h>
+
 #include <cstdio>
 #include <string>
 
@@ -28,7 +31,7 @@ std::optional<ddfcam::LengthUnit> unitOption(const Arguments& args) {
 }
 
 bool warnIfOtherUnit(const std::filesystem::path& file, double fileDiagonal,
-                     const std::optional<ddfcam::LengthUnit>& given) {
+                     const std::optional<ddfcam::LengthUnit>& given, const std::string& remedy) {
   if (given || !sizeSuggestsOtherUnit(fileDiagonal)) return false;
   char hint[160];
   if (const std::optional<ddfcam::LengthUnit> likely = likelyUnit(fileDiagonal)) {
@@ -39,8 +42,8 @@ bool warnIfOtherUnit(const std::filesystem::path& file, double fileDiagonal,
   }
   endProgressLine();
   std::fflush(stdout);
-  std::fprintf(stderr, "warning: %s is %.4g units across; if it is not in mm, pass --units (%s)\n",
-               file.string().c_str(), fileDiagonal, hint);
+  std::fprintf(stderr, "warning: %s is %.4g units across; if it is not in mm, %s (%s)\n",
+               file.string().c_str(), fileDiagonal, remedy.c_str(), hint);
   return true;
 }
 
@@ -54,6 +57,18 @@ ddf::DisplacementField loadPartInUnit(const std::filesystem::path& path, io::Loa
   // A CAD file states its unit, so its size needs no second opinion.
   if (r.converted && !r.unitFromFile) warnIfOtherUnit(path, r.fileDiagonal, params.unit);
   return part;
+}
+
+planning::Project openPartInUnit(const std::filesystem::path& path, io::LoadPartParams params,
+                                 const char* label) {
+  params.progress = consoleProgress(label);
+  io::LoadPartReport report;
+  planning::Project project = io::openProject(path, params, &report);
+  endProgressLine();
+  if (!project.part) throw InvalidInput(path.string() + " holds no part");
+  if (report.converted && !report.unitFromFile)
+    warnIfOtherUnit(path, report.fileDiagonal, params.unit);
+  return project;
 }
 
 }  // namespace ddfcam::cli

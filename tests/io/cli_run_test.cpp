@@ -313,6 +313,17 @@ TEST(CliRun, PartInMetresIsConvertedInItsUnit) {
   EXPECT_NEAR((hi - lo).y(), 100.0, 1e-9);
   for (int v = 0; v < project.part->vertexCount(); ++v)
     EXPECT_LE(project.part->position(v).x(), 200.0 + 1e-6);
+  // Without "units" the file is read as mm, and its size (0.2237 across: 0.2 x 0.1 x 0.00625) draws
+  // the warning naming the job file's key and the size the part would have in metres.
+  writeText(dir / "job.json", R"({
+  "part": {"file": "saddle_m.obj", "support": "input", "resolution": 4},
+  "regions": [{"field": "fixed", "direction": [0, 1, 0], "smooth": false, "spacingMm": 0.04}]
+})");
+  const RunResult unstated = cli(dir, {"run", (dir / "job.json").string()});
+  ASSERT_EQ(unstated.exitCode, 0) << unstated.err;
+  EXPECT_THAT(unstated.err, HasSubstr("saddle_m.obj is 0.2237 units across; if it is not in mm, "
+                                      "set \"units\" in the job's \"part\" object (as m it would "
+                                      "be 223.7 mm)"));
 }
 
 TEST(CliRun, BadPartConversionKeysAreNamed) {
