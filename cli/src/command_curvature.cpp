@@ -198,6 +198,9 @@ void printSummary(const CurvatureResult& r, const SampledMesh& s) {
   }
   if (r.curvature.method == planning::CurvatureMethod::VertexQuadricFit)
     std::printf("  raster points: %zu, vertex quadric fits (the faces are flat)\n", points);
+  else if (r.curvature.method == planning::CurvatureMethod::DesignMeshFit)
+    std::printf("  raster points: %zu, vertex quadric fits of the mesh the part came from\n",
+                points);
   else
     std::printf("  raster points: %zu, difference step d = %d\n", points, r.curvature.step);
   std::printf("  k_max %s 1/mm, k_min %s 1/mm\n", range(r.curvature.kMax, s).c_str(),
@@ -227,12 +230,14 @@ int runCurvature(std::span<const std::string> words) {
   args.expectPositionals(1, "an input part (.ddf or mesh)");
   const std::filesystem::path input = args.positionals()[0];
   const std::filesystem::path output = outputPath(args, input);
-  planning::CurvatureParams params;
-  params.step = args.integer("step", 0, 1, 1 << 20);
+  const int step = args.integer("step", 0, 1, 1 << 20);
   const Clock::time_point start = Clock::now();
   io::LoadPartParams load;
   load.unit = unitOption(args);
-  const ddf::DisplacementField field = loadPartInUnit(input, load, "loading");
+  const planning::Project project = openPartInUnit(input, load, "loading");
+  const ddf::DisplacementField& field = *project.part;
+  planning::CurvatureParams params = planning::partCurvatureParams(project);
+  params.step = step;
   const Clock::time_point computeStart = Clock::now();
   params.progress = consoleProgress("curvature");
   CurvatureResult r{planning::computeCurvature(field, params), {}, {}};

@@ -232,12 +232,16 @@ PlanOptions parseOptions(std::span<const std::string> words) {
   return o;
 }
 
-ddf::DisplacementField loadInput(const std::filesystem::path& input,
-                                 const std::optional<ddfcam::LengthUnit>& unit) {
-  if (input == "demo") return ddf::demoPart().ddf;
+planning::Project loadInput(const std::filesystem::path& input,
+                            const std::optional<ddfcam::LengthUnit>& unit) {
+  if (input == "demo") {
+    planning::Project project;
+    project.part = ddf::demoPart().ddf;
+    return project;
+  }
   io::LoadPartParams params;
   params.unit = unit;
-  return loadPartInUnit(input, params, "loading");
+  return openPartInUnit(input, params, "loading");
 }
 
 double boxDiagonal(const ddf::DisplacementField& part) {
@@ -344,12 +348,13 @@ int runPlan(std::span<const std::string> words) {
   PlanOptions o = parseOptions(words);
   StageTimes t;
   Clock::time_point start = Clock::now();
-  const ddf::DisplacementField part = loadInput(o.input, o.unit);
+  const planning::Project project = loadInput(o.input, o.unit);
+  const ddf::DisplacementField& part = *project.part;
   t.load = msSince(start);
   std::printf("plan on %s: %d faces, m = %d\n", o.input.string().c_str(), part.faceCount(),
               part.raster().m);
   start = Clock::now();
-  planning::CurvatureParams curvatureParams;
+  planning::CurvatureParams curvatureParams = planning::partCurvatureParams(project);
   curvatureParams.progress = consoleProgress("curvature");
   const planning::CurvatureField curvature = planning::computeCurvature(part, curvatureParams);
   endProgressLine();

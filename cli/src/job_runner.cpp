@@ -127,7 +127,7 @@ JobResult runJobStages(const JobSpec& spec) {
   });
   planning::CurvatureField curvature;
   stage(result, "curvature", [&] {
-    curvature = planning::computeCurvature(*project.part);
+    curvature = planning::computeCurvature(*project.part, planning::partCurvatureParams(project));
     return std::to_string(curvature.kMax.size()) + " raster points";
   });
   stage(result, "segmentation", [&] {

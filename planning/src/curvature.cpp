@@ -2,6 +2,7 @@
 // ddfcam: principal curvatures and directions at every raster point of a DDF (sec. 8.2).
 #include <ddfcam/error.h>
 #include <ddfcam/planning/curvature.h>
+#include <ddfcam/planning/design_curvature.h>
 #include <ddfcam/planning/vertex_curvature.h>
 
 #include "curvature_extension.h"
@@ -162,8 +163,15 @@ int automaticCurvatureStep(int m) {
 }
 
 CurvatureField computeCurvature(const ddf::DisplacementField& ddf, const CurvatureParams& params) {
-  if (params.method == CurvatureMethod::VertexQuadricFit ||
-      (params.method == CurvatureMethod::Automatic && ddf.faceCount() > 0 && hasFlatFaces(ddf))) {
+  const bool automatic = params.method == CurvatureMethod::Automatic;
+  const bool flat = automatic && ddf.faceCount() > 0 && hasFlatFaces(ddf);
+  if (params.method == CurvatureMethod::DesignMeshFit ||
+      (automatic && !flat && params.designMesh && !params.designMesh->triangles.empty())) {
+    if (!params.designMesh)
+      throw InvalidInput("computeCurvature: the design-mesh fit needs CurvatureParams::designMesh");
+    return computeDesignCurvature(ddf, *params.designMesh, params);
+  }
+  if (params.method == CurvatureMethod::VertexQuadricFit || flat) {
     VertexCurvatureParams vertexParams;
     vertexParams.umbilicTolerance = params.umbilicTolerance;
     vertexParams.flatCurvaturePerMm = params.flatCurvaturePerMm;
@@ -218,6 +226,20 @@ ScalarField curvatureScalarField(const CurvatureField& field, CurvatureQuantity 
   }
   throw InvalidInput("curvatureScalarField: unknown quantity " +
                      std::to_string(static_cast<int>(quantity)));
+}
+
+}  // namespace ddfcam::planning
+
+namespace ddfcam::planning {
+
+CurvatureParams partCurvatureParams(const Project& project) {
+  CurvatureParams params;
+  if (project.part &&
+      project.cadFaceOfSupportFace.size() == static_cast<std::size_t>(project.part->faceCount()))
+    params.faceLabels = project.cadFaceOfSupportFace;
+  if (!project.sourcePath.empty() && project.designMesh && !project.designMesh->triangles.empty())
+    params.designMesh = std::make_shared<const ddf::TriangleMesh>(*project.designMesh);
+  return params;
 }
 
 }  // namespace ddfcam::planning

@@ -3,6 +3,7 @@
 #include <ddfcam/error.h>
 #include <ddfcam/planning/vertex_curvature.h>
 
+#include "curvature_tensor.h"
 #include "curvature_wedges.h"
 
 #include <tbb/blocked_range.h>
@@ -239,23 +240,9 @@ std::vector<VertexShape> wedgeShapes(const ddf::DisplacementField& ddf,
   return out;
 }
 
-// The blended tensor's two tangential principal curvatures at one raster point.
 void storePoint(const Mat3& s, const Vec3& n, const VertexCurvatureParams& params,
                 CurvatureField& out, std::size_t at) {
-  const Vec3 b1 = n.unitOrthogonal(), b2 = n.cross(b1);
-  const double s11 = b1.dot(s * b1), s12 = b1.dot(s * b2), s22 = b2.dot(s * b2);
-  const double mean = 0.5 * (s11 + s22);
-  const double radius = std::hypot(0.5 * (s11 - s22), s12);
-  const double angle = 0.5 * std::atan2(2.0 * s12, s11 - s22);
-  const double kMax = mean + radius, kMin = mean - radius;
-  out.kMax[at] = static_cast<float>(kMax);
-  out.kMin[at] = static_cast<float>(kMin);
-  out.mean[at] = static_cast<float>(mean);
-  out.gaussian[at] = static_cast<float>(kMax * kMin);
-  out.dirMax[at] = std::cos(angle) * b1 + std::sin(angle) * b2;
-  out.dirMin[at] = n.cross(out.dirMax[at]);
-  const double scale = std::max(std::abs(kMax), std::abs(kMin));
-  out.umbilic[at] = kMax - kMin <= params.umbilicTolerance * scale + params.flatCurvaturePerMm;
+  detail::storeCurvatureTensor(s, n, params.umbilicTolerance, params.flatCurvaturePerMm, out, at);
 }
 
 // Corners whose fit failed drop out of the blend (their share goes to the others), so that
@@ -325,9 +312,7 @@ CurvatureField computeVertexCurvature(const ddf::DisplacementField& ddf,
   reportProgress(params.progress, 0.3);
   const std::size_t size = ddf.allHeights().size();
   CurvatureField out;
-  out.kMax.resize(size), out.kMin.resize(size), out.mean.resize(size);
-  out.gaussian.resize(size), out.dirMax.resize(size), out.dirMin.resize(size);
-  out.umbilic.resize(size);
+  detail::resizeCurvatureField(out, size);
   out.step = 1;
   out.method = CurvatureMethod::VertexQuadricFit;
   auto body = [&](const tbb::blocked_range<int>& r) {

@@ -14,29 +14,15 @@
 #include <cstdio>
 #include <numbers>
 
+#include "../support/test_meshes.h"
+
 namespace ddfcam::planning {
 namespace {
 
 using ddf::Vec3;
 constexpr double kPi = std::numbers::pi;
 
-// Torus (R, r) as a quad grid split into triangles, counter-clockwise seen from outside.
-ddf::TriangleMesh torusMesh(double R, double r, int nu, int nv) {
-  ddf::TriangleMesh mesh;
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) {
-      const double u = 2 * kPi * i / nu, v = 2 * kPi * j / nv;
-      mesh.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u),
-                                 (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
-    }
-  auto id = [&](int i, int j) { return ((i + nu) % nu) * nv + (j + nv) % nv; };
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) {
-      mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  return mesh;
-}
+using test::torusMesh;
 
 // Open cylinder of radius r along z, triangles counter-clockwise seen from outside (or
 // from inside when @p inside).

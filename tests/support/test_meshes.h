@@ -6,8 +6,11 @@
 #include <ddfcam/ddf/support_mesh.h>
 #include <ddfcam/ddf/triangle_mesh.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace ddfcam::test {
@@ -83,6 +86,35 @@ inline ddf::TriangleMesh heightFieldMesh(double x0, double x1, double y0, double
       mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
     }
   return mesh;
+}
+
+/// Torus with radii (R, r) about the z axis as an nu x nv quad grid split into triangles,
+/// counter-clockwise seen from outside.
+inline ddf::TriangleMesh torusMesh(double R, double r, int nu, int nv) {
+  ddf::TriangleMesh mesh;
+  const double twoPi = 2.0 * 3.14159265358979323846;
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double u = twoPi * i / nu, v = twoPi * j / nv;
+      mesh.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u),
+                                 (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+    }
+  auto id = [&](int i, int j) { return ((i + nu) % nu) * nv + (j + nv) % nv; };
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return mesh;
+}
+
+/// Exact principal curvatures (k_max, k_min), 1/mm, of the torus (R, r) of torusMesh at the
+/// torus point nearest to @p p, tool side (outward normal, convex positive): 1/r around the
+/// tube and cos v / (R + r cos v) around the axis.
+inline std::pair<double, double> torusCurvature(double R, double r, const ddf::Vec3& p) {
+  const double v = std::atan2(p.z(), std::hypot(p.x(), p.y()) - R);
+  const double a = 1.0 / r, b = std::cos(v) / (R + r * std::cos(v));
+  return {std::max(a, b), std::min(a, b)};
 }
 
 }  // namespace ddfcam::test

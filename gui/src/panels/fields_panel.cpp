@@ -39,6 +39,7 @@ struct FieldInputs {
   ddf::DisplacementField part;
   std::vector<float> reference;
   std::optional<ddf::TriangleMesh> design;
+  planning::CurvatureParams curvature;  ///< planning::partCurvatureParams of the project
 };
 
 double supportDiagonalMm(const ddf::DisplacementField& part) {
@@ -47,7 +48,7 @@ double supportDiagonalMm(const ddf::DisplacementField& part) {
 }
 
 planning::CurvatureField curvatureOf(const FieldInputs& in, const ProgressCallback& progress) {
-  planning::CurvatureParams params;
+  planning::CurvatureParams params = in.curvature;
   params.progress = progress;
   return planning::computeCurvature(in.part, params);
 }
@@ -222,8 +223,9 @@ bool FieldsPanel::compute(FieldKind kind) {
       throw InvalidInput("material removed needs a stock state; the project has no states");
     if (kind == FieldKind::Deviation && !p.designMesh)
       throw InvalidInput("the project has no design mesh to compare with (open a mesh file)");
-    auto in = std::make_shared<FieldInputs>(FieldInputs{
-        *p.part, p.states.empty() ? std::vector<float>{} : p.states.front().heights, p.designMesh});
+    auto in = std::make_shared<FieldInputs>(
+        FieldInputs{*p.part, p.states.empty() ? std::vector<float>{} : p.states.front().heights,
+                    p.designMesh, planning::partCurvatureParams(p)});
     Workbench* wb = &workbench();
     started = wb->jobs.start(title, [in, kind, wb](const ProgressCallback& progress) {
       auto field = std::make_shared<planning::ScalarField>(computeField(kind, *in, progress));

@@ -90,8 +90,9 @@ bool SegmentationPanel::segment() {
     params.type.flatCurvaturePerMm = flatThreshold_->value();
     params.minFaces = minFaces_->value();
     title = byType ? tr("Segment by curvature type") : tr("Segment by tool radius");
-    work = [copy, params, byType, radii](const ProgressCallback& progress) {
-      planning::CurvatureParams curvatureParams;
+    const planning::CurvatureParams base = planning::partCurvatureParams(project);
+    work = [copy, params, byType, radii, base](const ProgressCallback& progress) {
+      planning::CurvatureParams curvatureParams = base;
       curvatureParams.progress = [&](double f) { return !progress || progress(0.7 * f); };
       const planning::CurvatureField curvature = planning::computeCurvature(*copy, curvatureParams);
       planning::SegmentationParams p = params;

@@ -141,6 +141,7 @@ bool SpacingRefinementPanel::refine() {
       throw InvalidInput("choose a tool");
     const int region = region_->currentData().toInt();
     auto part = std::make_shared<const ddf::DisplacementField>(*p.part);
+    const planning::CurvatureParams curvatureParams = planning::partCurvatureParams(p);
     FieldChoice choice;
     choice.source = static_cast<Source>(source_->currentData().toInt());
     if (region >= 0) choice.faceMask = regionFaceMask(*part, p.regions[region]);
@@ -151,7 +152,8 @@ bool SpacingRefinementPanel::refine() {
     params.toolIndex = toolIndex;
     SpacingRefinementPanel* self = this;
     started = workbench().jobs.start(tr("Refine spacing"), [=](const ProgressCallback& progress) {
-      const auto fields = computeStreamlineFields(*part, choice, nullptr, scaled(progress, 0, 0.2));
+      const auto fields = computeStreamlineFields(*part, choice, nullptr, curvatureParams,
+                                                  scaled(progress, 0, 0.2));
       planning::SpacingRefinementParams run = params;
       run.progress = scaled(progress, 0.2, 1.0);
       auto result = std::make_shared<const planning::SpacingRefinementResult>(
@@ -178,8 +180,8 @@ bool SpacingRefinementPanel::apply() {
     std::vector<std::unique_ptr<DocumentCommand>> parts;
     parts.push_back(std::make_unique<AddPathCommand>(document, std::move(path)));
     parts.push_back(std::make_unique<AddFieldCommand>(document, std::move(error)));
-    document.push(std::make_unique<CompositeCommand>(document, tr("Refined path spacing"),
-                                                     std::move(parts)));
+    document.push(
+        std::make_unique<CompositeCommand>(document, tr("Refined path spacing"), std::move(parts)));
     workbench().partView.showField(kErrorField);
     workbench().partView.setToleranceBand(
         planning::ToleranceBand{-resultToleranceMm_, resultToleranceMm_});

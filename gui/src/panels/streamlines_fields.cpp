@@ -26,11 +26,12 @@ void maskField(const ddf::DisplacementField& part, const std::vector<std::uint8_
 
 std::shared_ptr<StreamlinesPanel::Fields> computeStreamlineFields(
     const ddf::DisplacementField& part, const FieldChoice& choice,
-    std::shared_ptr<const planning::CurvatureField> curvature, const ProgressCallback& progress) {
+    std::shared_ptr<const planning::CurvatureField> curvature,
+    const planning::CurvatureParams& curvatureParams, const ProgressCallback& progress) {
   auto fields = std::make_shared<StreamlinesPanel::Fields>();
   fields->choice = choice;
   if (!curvature) {
-    planning::CurvatureParams params;
+    planning::CurvatureParams params = curvatureParams;
     params.progress = [&](double f) { return !progress || progress(0.2 * f); };
     curvature =
         std::make_shared<const planning::CurvatureField>(planning::computeCurvature(part, params));

@@ -38,11 +38,13 @@ struct StreamlinesPanel::Fields {
   std::vector<planning::FieldSingularity> singularities;  ///< of field
 };
 
-/// Curvature (reused if @p curvature is given), flow field, its perpendicular and its
+/// Curvature (reused if @p curvature is given, else computed with @p curvatureParams, e.g.
+/// planning::partCurvatureParams of the project), flow field, its perpendicular and its
 /// singularities. Progress runs over [0, 1].
 std::shared_ptr<StreamlinesPanel::Fields> computeStreamlineFields(
     const ddf::DisplacementField& part, const FieldChoice& choice,
-    std::shared_ptr<const planning::CurvatureField> curvature, const ProgressCallback& progress);
+    std::shared_ptr<const planning::CurvatureField> curvature,
+    const planning::CurvatureParams& curvatureParams, const ProgressCallback& progress);
 
 /// One entry per support face, 1 on the faces of @p region.
 std::vector<std::uint8_t> regionFaceMask(const ddf::DisplacementField& part,

@@ -45,13 +45,15 @@ bool StreamlinesPanel::runWithFields(const QString& title, LineWork work, const 
   std::shared_ptr<const planning::CurvatureField> curvature =
       fields_ ? fields_->curvature : nullptr;
   auto copy = std::make_shared<ddf::DisplacementField>(*part);
+  const planning::CurvatureParams curvatureParams =
+      planning::partCurvatureParams(workbench().document.project());
   QPointer<StreamlinesPanel> self(this);
   const std::uint64_t generation = generation_;
   return workbench().jobs.start(title, [=](const ProgressCallback& progress) {
     std::shared_ptr<const Fields> fields = cached;
     const double share = fields ? 0.0 : 0.7;
     if (!fields)
-      fields = computeStreamlineFields(*copy, choice, curvature,
+      fields = computeStreamlineFields(*copy, choice, curvature, curvatureParams,
                                        [&](double f) { return !progress || progress(share * f); });
     std::vector<planning::Streamline> lines;
     if (work)
@@ -229,6 +231,8 @@ bool StreamlinesPanel::fairSelected(double deviationMm) {
   }
   auto lines = std::make_shared<std::vector<planning::Streamline>>(*raw);
   auto copy = std::make_shared<ddf::DisplacementField>(*part);
+  const planning::CurvatureParams curvatureParams =
+      planning::partCurvatureParams(workbench().document.project());
   QPointer<StreamlinesPanel> self(this);
   const std::uint64_t generation = generation_;
   return workbench().jobs.start(tr("Fair path"), [=](const ProgressCallback& progress) {

@@ -7,6 +7,7 @@
 #include <ddfcam/progress.h>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace ddfcam::planning {
@@ -14,12 +15,17 @@ namespace ddfcam::planning {
 /// @brief How computeCurvature() estimates the curvature.
 enum class CurvatureMethod {
   /// VertexQuadricFit when every face of the DDF is flat (hasFlatFaces(): a converted triangle
-  /// mesh before any cut), else RasterDifferences.
+  /// mesh before any cut); else DesignMeshFit when CurvatureParams::designMesh is set; else
+  /// RasterDifferences.
   Automatic,
   /// Eq. 8.2 finite differences of the heights over the raster (smooth DDFs).
   RasterDifferences,
   /// Quadric fits at the support vertices, blended over the faces (computeVertexCurvature()).
-  VertexQuadricFit
+  VertexQuadricFit,
+  /// Quadric fits at the vertices of the mesh the part was converted from, at the nearest
+  /// point of that mesh (computeDesignCurvature()): a reduced support's heights follow the
+  /// mesh's flat triangles, whose second differences are zero inside and spikes at the edges.
+  DesignMeshFit
 };
 
 /// @brief Options of computeCurvature().
@@ -36,9 +42,16 @@ struct CurvatureParams {
   /// Curvature below which both directions count as meaningless (a plane is isotropic),
   /// 1/mm (default 1e-6).
   double flatCurvaturePerMm = 1e-6;
-  /// VertexQuadricFit only: per support face a label such as its CAD face, or empty
-  /// (VertexCurvatureParams::faceLabels; default empty).
+  /// VertexQuadricFit and DesignMeshFit: per support face a label such as its CAD face, or
+  /// empty (VertexCurvatureParams::faceLabels; default empty).
   std::vector<int> faceLabels;
+  /// The triangle mesh the DDF was converted from (mm, part frame), for DesignMeshFit, or null
+  /// (default). partCurvatureParams() sets it for a part read from a mesh or CAD file.
+  std::shared_ptr<const ddf::TriangleMesh> designMesh;
+  /// DesignMeshFit: a face takes the design mesh's curvature when all its raster points lie
+  /// within this distance of the mesh, mm; other faces (e.g. cut below the design) get
+  /// RasterDifferences. 0 = a quarter of the mean raster spacing (default 0).
+  double designDistanceMm = 0.0;
   /// Process faces in parallel with TBB (default true).
   bool parallel = true;
   /// Progress in [0, 1]; returning false cancels (default: none).
@@ -91,13 +104,21 @@ int automaticCurvatureStep(int m);
 /// and the same accuracy as the interior. On the outer boundary of an open support the heights
 /// are extrapolated by the cubic of the nearest raster cells (lower accuracy there).
 /// With params.method VertexQuadricFit, or Automatic on a DDF whose faces are all flat, the
-/// result is computeVertexCurvature() instead (params.step is then not used).
+/// result is computeVertexCurvature() instead (params.step is then not used); with
+/// DesignMeshFit, or Automatic with params.designMesh set on a DDF with curved faces, it is
+/// computeDesignCurvature().
 /// @throws InvalidInput if params.step < 0 or the step is too large for the raster (3 d > m-1
 /// needs m >= 4 and d <= (m - 1) / 3), the DDF has no faces, or params.faceLabels has a size
 /// other than 0 or the face count (vertex fit).
 /// @throws Cancelled if params.progress asks to stop.
 CurvatureField computeCurvature(const ddf::DisplacementField& ddf,
                                 const CurvatureParams& params = {});
+
+/// @brief The curvature options for the part of @p project as a user sees it: its CAD faces
+/// as labels (when there is one per support face) and, for a part read from a mesh or CAD file
+/// (sourcePath set) with a design mesh, that mesh for DesignMeshFit. A generated part's design
+/// mesh is a coarse triangulation of smooth heights, which its raster differences see better.
+CurvatureParams partCurvatureParams(const Project& project);
 
 /// @brief Scalar quantities of a CurvatureField.
 enum class CurvatureQuantity {
