@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace ddfcam::ddf::detail {
@@ -40,8 +41,8 @@ Refusal SupportReducer::attempt(SupportMesh::EdgeHandle eh) {
 // and the constraints on it, cheapest first.
 Refusal SupportReducer::evaluate(Tentative& t, double capScale) {
   if (const Refusal r = chooseVector(t, capScale); r != Refusal::None) return r;
-  rasterNewFaces(t);
-  Refusal r = checkCoverage(t);
+  Refusal r = rasterNewFaces(t);
+  if (r == Refusal::None) r = checkInputCoverage(t);
   if (r == Refusal::None && params_.requireContainment && !contained(t)) r = Refusal::Containment;
   if (r == Refusal::None && params_.requireUniqueProjection && !crustsFree(t))
     r = Refusal::CrustConflict;
@@ -149,22 +150,34 @@ void SupportReducer::gatherCandidates(Tentative& t) {
     for (int f : t.region.neighbours) add(f);
 }
 
-void SupportReducer::rasterNewFaces(Tentative& t) const {
-  t.items.resize(t.faces.size());
-  tbb::parallel_for(std::size_t{0}, t.faces.size(), [&](std::size_t i) {
+// The new faces' item buffers, each checked at once against constraint (b) and the angle bound
+// (sec. 6.2). The faces are shot in parallel; a face after the first refused one is skipped,
+// which leaves the refusal of the serial order: every face before it is shot and passes.
+Refusal SupportReducer::rasterNewFaces(Tentative& t) const {
+  const std::size_t faces = t.faces.size();
+  t.items.resize(faces);
+  std::vector<Refusal> why(faces, Refusal::None);
+  std::atomic<std::size_t> firstRefused{faces};
+  tbb::parallel_for(std::size_t{0}, faces, [&](std::size_t i) {
+    if (i > firstRefused.load(std::memory_order_relaxed)) return;
     rasterFace(t.faces[i].corners, params_.resolution, items_, t.candidates, t.items[i]);
+    if (params_.requireRayCoverage && !everyRayHits(t.items[i]))
+      why[i] = Refusal::RayCoverage;
+    else if (params_.requireAngleBound &&
+             !anglesBounded(t.faces[i].corners, params_.resolution, t.items[i], items_, minCosine_))
+      why[i] = Refusal::Angle;
+    if (why[i] == Refusal::None) return;
+    std::size_t seen = firstRefused.load(std::memory_order_relaxed);
+    while (i < seen && !firstRefused.compare_exchange_weak(seen, i)) {
+    }
   });
+  const std::size_t first = firstRefused.load();
+  return first < faces ? why[first] : Refusal::None;
 }
 
-// Constraint (b), the angle bound and constraint (a) by per-item hit counters (sec. 6.2).
-Refusal SupportReducer::checkCoverage(Tentative& t) {
-  const int m = params_.resolution;
-  for (std::size_t i = 0; i < t.faces.size(); ++i) {
-    if (params_.requireRayCoverage && !everyRayHits(t.items[i])) return Refusal::RayCoverage;
-    if (params_.requireAngleBound &&
-        !anglesBounded(t.faces[i].corners, m, t.items[i], items_, minCosine_))
-      return Refusal::Angle;
-  }
+// Constraint (a) by a counter per item of the support faces it is assigned to (sec. 6.2): an
+// item hit by some ray within the crust is in the face's item set, nearest hit or not.
+Refusal SupportReducer::checkInputCoverage(Tentative& t) {
   ++stampNow_;
   const auto change = [&](const std::vector<int>& hits, int by) {
     for (int item : hits) {
@@ -174,9 +187,9 @@ Refusal SupportReducer::checkCoverage(Tentative& t) {
       delta_[item] += by;
     }
   };
-  change(faceItems_[t.region.removed[0]].hit, -1), change(faceItems_[t.region.removed[1]].hit, -1);
-  for (int f : t.region.modified) change(faceItems_[f].hit, -1);
-  for (const FaceItems& fi : t.items) change(fi.hit, +1);
+  for (int f : t.region.removed) change(faceItems_[f].items, -1);
+  for (int f : t.region.modified) change(faceItems_[f].items, -1);
+  for (const FaceItems& fi : t.items) change(fi.items, +1);
   if (params_.requireInputCoverage)
     for (int item : t.touchedItems)
       if (hitCount_[item] > 0 && hitCount_[item] + delta_[item] <= 0) return Refusal::InputCoverage;

@@ -45,7 +45,7 @@ void offerHit(const FaceCorners& face, int n, int i, int k, std::size_t idx, dou
 // Rows at least this long are first cut to the index ranges where a hit is possible (the
 // roots of the hit conditions, as the cut kernel does); on shorter rows the root finding costs
 // more than testing every point.
-constexpr int kIntervalRowLength = 12;
+constexpr int kIntervalRowLength = 24;
 
 // Tests the raster points first..last of row @p k of one (face, item) pair against the linear
 // forms of sec. 5.2 and offers the hits. Returns whether any ray hit within |h| <= 1.
@@ -115,26 +115,118 @@ bool rowRange(const PairForms& f, int k, int length, int& first, int& last) {
   return true;
 }
 
-// Shoots the raster of one (face, item) pair row by row.
-bool shootPair(const FaceCorners& face, int n, const PairForms& f, int item,
-               const ReductionItems& items, FaceItems& out) {
-  bool any = false;
-  std::size_t rowStart = 0;
-  std::array<std::pair<int, int>, 5> ranges;
+// What the rays of each raster row (|h| <= 1) can reach, seen along two in-plane axes, across
+// the rows and along them. The rays of a row segment lie in the hull of its end points +- their
+// vectors (the crust over a segment is affine in the position at a fixed height and affine in
+// the height at a fixed position); along the row, the ray of point i lies within `reach` of its
+// foot. An item whose projection misses these intervals is hit by no ray there, so a few
+// compares per row cull rows and points before the row's exact bounds are computed.
+struct RowSlabs {
+  Vec3 across, along;
+  std::vector<double> lo, hi;        // per row, the rays' interval on `across`
+  std::vector<double> start, reach;  // per row, point 0 on `along`, and max |v . along|
+  double step = 0.0;                 // change on `along` per raster step of a row
+  // The rows' feet lie on `across` at base + k slope; no ray strays further than spread.
+  double base = 0.0, slope = 0.0, spread = 0.0;
+};
+
+RowSlabs rowSlabs(const FaceCorners& face, int n) {
+  const auto& p = face.p;
+  const auto& v = face.v;
+  RowSlabs s;
+  // Rows keep mu_3 = k / n: they run parallel to p[0] - p[1], from p[1]'s side (i = 0).
+  s.along = p[0] - p[1];
+  s.across = (p[1] - p[0]).cross(p[2] - p[0]).cross(s.along);
+  s.step = s.along.squaredNorm() / n;
+  for (auto* x : {&s.lo, &s.hi, &s.start, &s.reach}) x->resize(n + 1);
+  s.base = p[1].dot(s.across), s.slope = (p[2] - p[1]).dot(s.across) / n;
+  for (int j = 0; j < 3; ++j) s.spread = std::max(s.spread, std::abs(v[j].dot(s.across)));
   for (int k = 0; k <= n; ++k) {
+    const double c = static_cast<double>(k) / n;
+    const Vec3 ps = (1.0 - c) * p[1] + c * p[2], vs = (1.0 - c) * v[1] + c * v[2];
+    const Vec3 pe = (1.0 - c) * p[0] + c * p[2], ve = (1.0 - c) * v[0] + c * v[2];
+    const double xs = ps.dot(s.across), ys = std::abs(vs.dot(s.across));
+    const double xe = pe.dot(s.across), ye = std::abs(ve.dot(s.across));
+    s.lo[k] = std::min(xs - ys, xe - ye), s.hi[k] = std::max(xs + ys, xe + ye);
+    s.start[k] = ps.dot(s.along);
+    s.reach[k] = std::max(std::abs(vs.dot(s.along)), std::abs(ve.dot(s.along)));
+  }
+  return s;
+}
+
+/// An item's intervals on the two slab axes, widened by a margin.
+struct ItemWindow {
+  double acrossLo, acrossHi, alongLo, alongHi;
+};
+
+ItemWindow itemWindow(const RowSlabs& s, const ReductionItems& items, int item) {
+  const double inf = std::numeric_limits<double>::infinity();
+  ItemWindow w{inf, -inf, inf, -inf};
+  for (int j = 0; j < 3; ++j) {
+    const double x = items.corner(item, j).dot(s.across), y = items.corner(item, j).dot(s.along);
+    w.acrossLo = std::min(w.acrossLo, x), w.acrossHi = std::max(w.acrossHi, x);
+    w.alongLo = std::min(w.alongLo, y), w.alongHi = std::max(w.alongHi, y);
+  }
+  // A hit may lie kLambdaTolerance (barycentric) outside the item, and rounding: widen.
+  const double size = 1e-6 * items.boxes[item].diagonal().norm();
+  const double a = size * s.across.norm(), b = size * s.along.norm();
+  w.acrossLo -= a, w.acrossHi += a, w.alongLo -= b, w.alongHi += b;
+  return w;
+}
+
+// The rows first..last (within 0..n) whose rays can reach the item; false when none can.
+bool windowRows(const RowSlabs& s, const ItemWindow& w, int n, int& first, int& last) {
+  first = 0, last = n;
+  if (s.slope == 0.0) return true;
+  double a = (w.acrossLo - s.spread - s.base) / s.slope;
+  double b = (w.acrossHi + s.spread - s.base) / s.slope;
+  if (a > b) std::swap(a, b);
+  if (!(a <= n && b >= 0.0)) return false;
+  // Clamped before the cast: far items give quotients beyond int.
+  first = static_cast<int>(std::max(0.0, std::floor(a) - 1.0));
+  last = static_cast<int>(std::min(static_cast<double>(n), std::ceil(b) + 1.0));
+  return true;
+}
+
+// Row k's points first..last (within 0..length-1) whose rays can reach the item along the
+// rows; false when none can.
+bool windowRange(const RowSlabs& s, const ItemWindow& w, int k, int length, int& first, int& last) {
+  if (s.hi[k] < w.acrossLo || s.lo[k] > w.acrossHi) return false;
+  first = 0, last = length - 1;
+  if (!(s.step > 0.0)) return true;
+  const double lo = std::floor((w.alongLo - s.reach[k] - s.start[k]) / s.step);
+  const double hi = std::ceil((w.alongHi + s.reach[k] - s.start[k]) / s.step);
+  if (lo > last || hi < first) return false;
+  first = static_cast<int>(std::max(0.0, lo));
+  last = static_cast<int>(std::min(static_cast<double>(last), hi));
+  return true;
+}
+
+// Shoots the raster of one (face, item) pair row by row, within the window of the item.
+bool shootPair(const FaceCorners& face, int n, const PairForms& f, int item,
+               const ReductionItems& items, const RowSlabs& slabs, const ItemWindow& w, int kFirst,
+               int kLast, FaceItems& out) {
+  bool any = false;
+  const Raster raster{n + 1};
+  std::array<std::pair<int, int>, 5> ranges;
+  for (int k = kFirst; k <= kLast; ++k) {
     const int length = n - k + 1;
-    int first = 0, last = 0;
-    if (rowRange(f, k, length, first, last)) {
+    const std::size_t rowStart = raster.rowOffset(k);
+    int first = 0, last = 0, from = 0, to = 0;
+    const bool open =
+        windowRange(slabs, w, k, length, first, last) && rowRange(f, k, length, from, to);
+    first = std::max(first, from), last = std::min(last, to);
+    if (open && first <= last) {
       if (last - first + 1 < kIntervalRowLength) {
         any |= shootRow(face, n, f, k, first, last, rowStart, item, items, out);
       } else {
         const int count = rowIntervals(f, k, length, KernelMode::Fill, kLambdaTolerance, ranges);
         for (int r = 0; r < count; ++r)
-          any |= shootRow(face, n, f, k, ranges[r].first, ranges[r].second, rowStart, item, items,
-                          out);
+          if (const int a = std::max(first, ranges[r].first), b = std::min(last, ranges[r].second);
+              a <= b)
+            any |= shootRow(face, n, f, k, a, b, rowStart, item, items, out);
       }
     }
-    rowStart += length;
   }
   return any;
 }
@@ -216,12 +308,16 @@ void rasterFace(const FaceCorners& face, int m, const ReductionItems& items,
   out.h.assign(points, 0.0);
   out.items.clear();
   const Eigen::AlignedBox3d box = crustBox(face);
+  const RowSlabs slabs = rowSlabs(face, n);
   for (int t : candidates) {
-    if (!box.intersects(items.boxes[t]) || itemSeparated(face, items, t)) continue;
+    if (!box.intersects(items.boxes[t])) continue;
+    const ItemWindow w = itemWindow(slabs, items, t);
+    int kFirst = 0, kLast = 0;
+    if (!windowRows(slabs, w, n, kFirst, kLast) || itemSeparated(face, items, t)) continue;
     const auto forms = makePairForms(face, items.corner(t, 0), items.corner(t, 1),
                                      items.corner(t, 2), n, KernelMode::Fill);
-    if (!forms) continue;
-    if (shootPair(face, n, *forms, t, items, out)) out.items.push_back(t);
+    if (forms && shootPair(face, n, *forms, t, items, slabs, w, kFirst, kLast, out))
+      out.items.push_back(t);
   }
   std::sort(out.items.begin(), out.items.end());
 }

@@ -67,8 +67,8 @@ class SupportReducer {
   bool buildFaces(Tentative& t) const;
   Refusal chooseVector(Tentative& t, double capScale);
   void gatherCandidates(Tentative& t);
-  void rasterNewFaces(Tentative& t) const;
-  Refusal checkCoverage(Tentative& t);
+  Refusal rasterNewFaces(Tentative& t) const;
+  Refusal checkInputCoverage(Tentative& t);
   void resetDelta(Tentative& t);
   bool contained(const Tentative& t);
   bool crustsFree(const Tentative& t);

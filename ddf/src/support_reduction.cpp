@@ -113,9 +113,9 @@ void SupportReducer::initialItems() {
     fi.items.erase(std::unique(fi.items.begin(), fi.items.end()), fi.items.end());
     fi.hit.assign(points, f), fi.h.assign(points, 0.0);
   });
+  // Constraint (a) counts, per item, the faces whose item set holds it.
   for (const FaceItems& fi : faceItems_)
-    for (int t : fi.hit)
-      if (t >= 0) ++hitCount_[t];
+    for (int t : fi.items) ++hitCount_[t];
 }
 
 void SupportReducer::rebuildHash() {

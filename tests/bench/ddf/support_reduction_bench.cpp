@@ -138,11 +138,8 @@ void runReduction(benchmark::State& state, const Part* part, const std::string& 
   }
   ddf::SupportReductionResult result;
   for (auto _ : state) {
-    const bool scaled = mode == kPaperSet;
-    std::vector<Vec3> vv = scaled ? part->scaledNormals : part->normals;
-    if (const char* e = std::getenv("VLEN"))
-      for (auto& x : vv) x = x.normalized() * std::atof(e);
-    result = ddf::reduceSupport(part->support, vv, {}, paramsFor(m, mode));
+    const auto& vectors = mode == kPaperSet ? part->scaledNormals : part->normals;
+    result = ddf::reduceSupport(part->support, vectors, {}, paramsFor(m, mode));
     benchmark::DoNotOptimize(result.support.n_faces());
   }
   const auto [inToDdf, ddfToIn, unfilled, issues, firstIssue] = deviations(*part, result, m);

@@ -92,15 +92,17 @@ struct SupportReductionResult {
 /// - edge length (maxEdgeMm);
 /// - unique projection, part 1: the new vertex is the midpoint moved along the averaged vector
 ///   (v_a + v_b)/2 onto the nearest item of the region within |h| <= 1 (the plain midpoint when
-///   the moved one folds a face); its vector keeps the averaged direction and gets the longest
-///   length L <= cap for which every modified face has h0 >= 1 (sec. 4.4), then 0.8 L when that
-///   still holds; cap = maxVectorLengthMm, or the longest new edge when that is 0; refused when
-///   no length works. Without requireUniqueProjection the vector is the plain average;
+///   the moved one folds a face); its vector keeps the averaged
+///   direction and gets the longest length L <= cap for which every modified face has h0 >= 1
+///   (sec. 4.4), then 0.8 L when that still holds; cap = maxVectorLengthMm, or the longest new edge
+///   when that is 0; refused when no length works. Without requireUniqueProjection the vector is
+///   the plain average;
 /// - the items of the modified faces (and of their neighbours, neighbourCandidates) are
 ///   re-assigned by V-shooting the new faces' rasters (resolution m) at them; every ray keeps
 ///   its nearest hit within |h| <= 1; ray coverage (b), then the angle bound, then input
-///   coverage (a) by per-item hit counters (an item whose counter was positive must not drop
-///   to 0; items never hit at the start, e.g. at m <= 3, are not held to it);
+///   coverage (a) by a counter per item of the faces whose item set holds it (some ray of the
+///   face hits it within |h| <= 1, nearest or not); a counter that was positive must not drop
+///   to 0 (items never hit at the start, e.g. at m <= 3, are not held to it);
 /// - containment: every vertex of a re-assigned item that V-projects onto a new face with mu
 ///   inside lies at |h| <= 1 there or in the crust of another face of the region;
 /// - unique projection, part 2: the +-1 crust of no new face meets the crust of a face sharing
