@@ -20,7 +20,8 @@
 namespace ddfcam::ddf {
 namespace {
 
-constexpr int kCorrectionPasses = 3;
+constexpr int kCorrectionPasses = 6;
+constexpr int kStalePasses = 2;  // correction passes without a gain that end them
 // A refilled raster point may move this far from the converted surface point, mm.
 constexpr double kDriftMm = 1e-4;
 
@@ -39,6 +40,9 @@ void checkParams(const StockCrustParams& p) {
   if (!(p.maxAngleDeg > 0.0 && p.maxAngleDeg < 90.0))
     throw InvalidInput("fitCrustToStock: maxAngleDeg must be in (0, 90), got " +
                        std::to_string(p.maxAngleDeg));
+  if (!(p.foldRepairAngleDeg >= p.maxAngleDeg && p.foldRepairAngleDeg < 90.0))
+    throw InvalidInput("fitCrustToStock: foldRepairAngleDeg must be in [maxAngleDeg, 90), got " +
+                       std::to_string(p.foldRepairAngleDeg));
 }
 
 // The old surface point of every raster point, expressed on the stubble of the new field (the
@@ -239,16 +243,25 @@ StockFit fitOnce(const DisplacementField& ddf, const TriangleMesh& input,
   const double reachMm = params.stockMm * (1.0 + params.marginFraction);
   detail::CrustPlan plan = detail::makeCrustPlan(ddf, params);
   for (int v = 0; v < ddf.vertexCount(); ++v) detail::setTarget(plan, v, reachMm);
-  fitted = fitAndFill(ddf, input, bvh, plan, params);
-  for (int pass = 0; pass < kCorrectionPasses; ++pass) {
-    if (!raiseShortVertices(fitted, plan, reachMm)) break;
-    fitted = fitAndFill(ddf, input, bvh, plan, params);
-  }
+  DisplacementField current = fitAndFill(ddf, input, bvh, plan, params);
   StockFit fit;
   fit.requestedMm = params.stockMm;
-  fit.reach = crustReach(fitted);
+  fit.reach = crustReach(current);
+  fitted = current;
+  detail::CrustPlan kept = plan;
+  // A longer top can fold a face that then pulls its vertices back further than the pass
+  // raised them, so the pass with the largest smallest reach is kept, and the passes stop
+  // when the last ones did not raise it (a concave limit, which no pass moves).
+  for (int pass = 0, stale = 0; pass < kCorrectionPasses && stale < kStalePasses; ++pass) {
+    if (!raiseShortVertices(current, plan, reachMm)) break;
+    current = fitAndFill(ddf, input, bvh, plan, params);
+    const CrustReach reach = crustReach(current);
+    ++stale;
+    if (reach.minAboveMm > fit.reach.minAboveMm)
+      fit.reach = reach, fitted = current, kept = plan, stale = 0;
+  }
   fit.holds = fit.reach.minAboveMm >= params.stockMm;
-  if (!fit.holds) fit.limit = describeLimit(plan, fitted, input, params, fit.reach);
+  if (!fit.holds) fit.limit = describeLimit(kept, fitted, input, params, fit.reach);
   return fit;
 }
 
@@ -269,14 +282,23 @@ StockFit fitCrustToStock(DisplacementField& ddf, const TriangleMesh& input,
   DisplacementField fitted = ddf;
   fit = fitOnce(ddf, input, bvh, params, fitted);
   // The chosen directions are not better everywhere yet (a rotated stubble of a coarse face
-  // may miss the input, or fold the moved crust); where they do not hold the allowance the
-  // converted directions are tried too and the larger smallest reach is kept.
+  // may miss the input, or fold the moved crust, and the fold repair judges the crust by the
+  // tops it expects, not by those the fit sets); where they do not hold the allowance the
+  // chosen directions without the repair and then the converted ones are tried too, and the
+  // larger smallest reach is kept.
+  const auto tryAlso = [&](const StockCrustParams& other) {
+    DisplacementField field = ddf;
+    const StockFit next = fitOnce(ddf, input, bvh, other, field);
+    if (next.reach.minAboveMm > fit.reach.minAboveMm) fit = next, fitted = std::move(field);
+  };
+  StockCrustParams fallback = params;
+  if (!fit.holds && params.chooseDirections && params.repairFolds) {
+    fallback.repairFolds = false;
+    tryAlso(fallback);
+  }
   if (!fit.holds && params.chooseDirections) {
-    StockCrustParams converted = params;
-    converted.chooseDirections = false;
-    DisplacementField other = ddf;
-    const StockFit second = fitOnce(ddf, input, bvh, converted, other);
-    if (second.reach.minAboveMm > fit.reach.minAboveMm) fit = second, fitted = std::move(other);
+    fallback.chooseDirections = false;
+    tryAlso(fallback);
   }
   ddf = std::move(fitted);
   return fit;

@@ -136,7 +136,7 @@ CrustPlan makeCrustPlan(const DisplacementField& ddf, const StockCrustParams& pa
   plan.vertexClass = coincidentVertexClasses(ddf);
   plan.d = plan.d0;
   if (params.chooseDirections)
-    chooseDirections(ddf, plan, params.maxAngleDeg, params.smoothingPasses);
+    chooseDirections(ddf, plan, params, params.stockMm * (1.0 + params.marginFraction));
   surfaceAtVertices(ddf, plan);
   capsFromUnitCrust(ddf, plan, params.safety);
   plan.hiT = plan.len0;

@@ -43,12 +43,13 @@ struct CrustPlan {
 CrustPlan makeCrustPlan(const DisplacementField& ddf, const StockCrustParams& params);
 
 /// Sets plan.d: the corner-angle weighted mean of the raster normals at each vertex class,
-/// smoothed with the neighbours' directions (@p smoothingPasses passes), each step blended back
-/// towards d0 as far as needed to keep d . n > 0.2 (or d0's value) on every incident support face
-/// and d within
-/// @p maxAngleDeg of every incident raster corner normal (or no further off than d0).
-void chooseDirections(const DisplacementField& ddf, CrustPlan& plan, double maxAngleDeg,
-                      int smoothingPasses);
+/// smoothed with the neighbours' directions (params.smoothingPasses passes), each step blended
+/// back towards d0 as far as needed to keep d . n > 0.2 (or d0's value) on every incident support
+/// face and d within params.maxAngleDeg of every incident raster corner normal (or no further off
+/// than d0); then re-chosen near folds for a reach of @p reachMm (see fitCrustToStock), within
+/// params.foldRepairAngleDeg.
+void chooseDirections(const DisplacementField& ddf, CrustPlan& plan, const StockCrustParams& params,
+                      double reachMm);
 
 /// Sets the target interval of vertex @p v for a reach of @p reachMm above, with the top at
 /// least @p hiTop (and at most capTop), the bottom mirrored where capBot allows.

@@ -256,5 +256,20 @@ TEST(StockCrust, RejectsANonPositiveStock) {
   EXPECT_THROW(fitCrustToStock(ddf, input, params), InvalidInput);
 }
 
+TEST(StockCrust, RejectsAFoldRepairAngleOutsideItsRange) {
+  const TriangleMesh input =
+      test::heightFieldMesh(0, 4, 0, 4, 2, 2, [](double, double) { return 0.0; });
+  StockCrustParams params;
+  params.stockMm = 1.0;
+  for (const double angleDeg : {30.0, 90.0}) {  // below maxAngleDeg (45), and grazing
+    DisplacementField ddf = converted(input);
+    params.foldRepairAngleDeg = angleDeg;
+    EXPECT_THROW(fitCrustToStock(ddf, input, params), InvalidInput) << angleDeg;
+  }
+  DisplacementField ddf = converted(input);
+  params.foldRepairAngleDeg = params.maxAngleDeg;
+  EXPECT_TRUE(fitCrustToStock(ddf, input, params).holds);
+}
+
 }  // namespace
 }  // namespace ddfcam::ddf

@@ -93,6 +93,12 @@ struct StockCrustParams {
   /// the stubbles over a concave crease more nearly parallel, but on a coarse reduced support
   /// rotate long stubbles further (see fitCrustToStock). Default 4.
   int smoothingPasses = 4;
+  /// Re-choose the chosen directions near folds (see fitCrustToStock). Default true.
+  bool repairFolds = true;
+  /// Angle bound of a direction re-chosen near a fold (see fitCrustToStock) against the
+  /// surface normals at the vertex, degrees (a direction already further off keeps at least
+  /// its converted angle). In [maxAngleDeg, 90). Default 60.
+  double foldRepairAngleDeg = 60.0;
   /// Bound on the shrink passes per settle and on the non-adjacent conflict rounds.
   /// Default 30.
   int maxRounds = 30;
@@ -112,9 +118,22 @@ struct StockCrustParams {
 /// params.smoothingPasses times with its neighbours' (stubbles of a face then converge less),
 /// each step blended back towards the converted direction as far as needed to keep
 /// constraint 1 on every incident support face and d within params.maxAngleDeg of the surface
-/// normals there. A vertex moves from the converted vector (s = 0) to its target (s = 1) along
-/// both direction and interval. Where the chosen directions do not hold the allowance, the fit
-/// is repeated with the converted directions and the larger smallest reach is kept.
+/// normals there. Near a fold the directions are then re-chosen: a support face's crust folds
+/// on its top side when the tops of its stubbles, p + hi d, are displaced across the face by
+/// more than its width, which a sliver face (a fraction of a mm wide, several mm long) next to a
+/// tight convex edge of a reduced support does at a few tenths of a mm wherever its vertices'
+/// directions differ: a vertex whose support faces wrap around the edge must keep its vector
+/// nearly tangent to some of them (constraint 1), and seen along that vector a small difference
+/// of the tops' heights is a large shift. So every face gets a fold score, the smaller of its
+/// crust height h0+ with each vertex vector sized to the top the fit will need there (2 x the
+/// reach over the vector's cosine with the surface normals, the cosine at least 0.3) against
+/// 1.2 and of its unit-vector h0- against 1.2 x the converted lengths, and each vertex of a
+/// face scoring below 1 tries its neighbours' directions, their mean, and blends towards them
+/// (within constraint 1 and params.foldRepairAngleDeg), keeping the one with the best smallest
+/// score over its faces; a few passes (params.repairFolds). A vertex moves from the converted
+/// vector (s = 0) to its target (s = 1) along both direction and interval. Where the chosen
+/// directions do not hold the allowance, the fit is repeated with the chosen directions unrepaired
+/// and with the converted directions, and the largest smallest reach is kept.
 ///
 /// Design. Every vertex gets a crust interval [lo, hi] of offsets along d from its support
 /// point p: the support moves to p + (lo + hi)/2 d and the
@@ -133,9 +152,9 @@ struct StockCrustParams {
 /// crusts meet those of non-adjacent faces (findCrustConflicts on a CrustHash), pull their
 /// vertices' intervals back towards the converted ones until none does; a face or pair that
 /// already failed in @p ddf is left as it was. The reach is then measured per raster point
-/// and vertices short of it get a longer interval (three correction passes). After every
-/// refill, a face with a raster point whose stubble misses the input and whose kept height
-/// lies further off the input than the converted point did gets its vertices' converted
+/// and vertices short of it get a longer interval (up to six correction passes, the best kept).
+/// After every refill, a face with a raster point whose stubble misses the input and whose kept
+/// height lies further off the input than the converted point did gets its vertices' converted
 /// directions back, and on a second such drift their converted vectors, so the represented
 /// surface is the converted one.
 /// @param ddf converted field (support, vectors, heights from @p input); changed in place.
