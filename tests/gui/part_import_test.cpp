@@ -13,6 +13,7 @@
 #include <ddfcam/gui/panels/mould_tools_panel.h>
 #include <ddfcam/gui/panels/part_panel.h>
 #include <ddfcam/gui/panels/segmentation_panel.h>
+#include <ddfcam/gui/panels/simulation_panel.h>
 #include <ddfcam/gui/part_import_dialog.h>
 #include <ddfcam/gui/part_scene.h>
 #include <ddfcam/gui/part_view.h>
@@ -86,6 +87,7 @@ class PartImportTest : public QObject {
   void unheldStockOffersLargestAllowance();
   void defaultChoicesReduceAndMeasure();
   void cadPartSegmentsByCadFace();
+  void bladeHoldsHalfAMillimetreOfStockAndRaises();
 
  private:
   const ddfcam::planning::Project& project() { return f_.window->document().project(); }
@@ -338,6 +340,48 @@ void PartImportTest::defaultChoicesReduceAndMeasure() {
       static_cast<long long>(timer.elapsed()), report->reduction.inputFaces,
       report->reduction.supportFaces, project().part->resolution(), report->accuracy.inputToDdfMm,
       report->accuracy.ddfToInputMm);
+}
+
+void PartImportTest::bladeHoldsHalfAMillimetreOfStockAndRaises() {
+  // The turbine blade (metres in the file) as a new user brings it in for grinding from stock:
+  // reduced support, 0.5 mm of stock asked for in the import dialog, then Raise by allowance.
+  const QString path = QString(DDFCAM_SHARED_DATA_DIR) + "/meshes/turbine-blade-jigsaw.stl";
+  if (!QFileInfo::exists(path)) QSKIP("shared data not found");
+  PartImportChoices c;
+  c.unit = LengthUnit::Metre;
+  c.toleranceMm = 0.0;  // the default resolution: a quick import
+  c.stockMm = 0.5;
+  QVERIFY(import(path, c));
+  QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
+  const auto& report = f_.window->projectActions().partReport();
+  QVERIFY(report && report->stock);
+  QVERIFY2(report->stock->holds, report->stock->limit ? report->stock->limit->message.c_str() : "");
+  QVERIFY(report->stock->reach.minAboveMm >= 0.5);
+  QVERIFY(f_.script.stockOffers.isEmpty());
+  const std::vector<float> design = project().part->allHeights();
+  auto* simulation = f_.window->findChild<ddfcam::gui::SimulationPanel*>();
+  QVERIFY(simulation->raiseByAllowance(0.5));
+  QVERIFY(f_.window->waitForJobs(120'000));
+  QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
+  // Oracle: the raise moves the surface 0.5 mm along the design's normals, so every raster
+  // point moves along its stubble by at least that (0.5 mm / cos of the stubble's lean).
+  const auto& part = *project().part;
+  double least = 1e9, most = 0.0;
+  for (int f = 0; f < part.faceCount(); f += 3)
+    for (int k = 0; k <= part.raster().steps(); ++k)
+      for (int i = 0; i < part.raster().rowLength(k); ++i) {
+        const std::size_t at = f * part.pointsPerFace() + part.raster().index(i, k);
+        const Vec3 v = part.vectorAt(f, part.rasterBary(i, k));
+        const double along = (part.allHeights()[at] - design[at]) * v.norm();
+        least = std::min(least, along), most = std::max(most, along);
+      }
+  qInfo(
+      "blade: %d support faces, crust reach above %.3g mm (min); raised 0.5 mm: the raster "
+      "points moved %.3g..%.3g mm along their stubbles",
+      part.faceCount(), report->stock->reach.minAboveMm, least, most);
+  QVERIFY(least >= 0.5 * (1.0 - 1e-3));
+  f_.window->view()->viewFrom(ddfcam::gui::ViewDirection::Isometric);
+  ddfcam::test::dumpFrame(f_.window->view()->renderImage(), "part_import_blade_stock");
 }
 
 QTEST_MAIN(PartImportTest)
