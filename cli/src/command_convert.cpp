@@ -52,8 +52,9 @@ int runConvert(std::span<const std::string> words) {
   if (output.extension() != ".ddf")
     throw UsageError("output " + output.string() + " must end in .ddf");
   io::LoadPartReport report;
+  ddf::TriangleMesh inputMesh;
   const ddf::DisplacementField field =
-      loadPartInUnit(input, conversionParams(args), "converting", &report);
+      loadPartInUnit(input, conversionParams(args), "converting", &report, &inputMesh);
   bool usable = true;
   if (report.converted) {
     printConversion(input, report);
@@ -70,6 +71,8 @@ int runConvert(std::span<const std::string> words) {
   metadata.sourceUnit = report.unit;
   metadata.cadFaceOfSupportFace = report.cadFaceOfSupportFace;
   metadata.cadFaceNames = report.cadFaceNames;
+  // The input stays with the field: the curvature of a reduced support comes from it.
+  if (!inputMesh.triangles.empty()) metadata.designMesh = std::move(inputMesh);
   io::writeDdf(field, output, metadata);
   std::printf("wrote %s%s: %d vertices, %d faces, m = %d, %zu raster points\n",
               output.string().c_str(), usable ? "" : " (INVALID, --allow-invalid)",

@@ -74,11 +74,15 @@ InfoInput readInput(const std::filesystem::path& input, const Arguments& args) {
     in.facts.cadFaceNames = std::move(metadata.cadFaceNames);
     const unsigned version = metadata.stored ? 2u : 1u;
     const auto bytes = static_cast<std::uintmax_t>(std::filesystem::file_size(input));
+    const std::size_t design = metadata.designMesh ? metadata.designMesh->triangles.size() : 0;
     in.fileLine = input.string() + ": .ddf format version " + std::to_string(version) + ", " +
-                  std::to_string(bytes) + " bytes\n";
+                  std::to_string(bytes) + " bytes" +
+                  (design ? ", design mesh of " + std::to_string(design) + " triangles" : "") +
+                  "\n";
     in.fileJson = "  \"file\": " + jsonString(input.string()) +
                   ",\n  \"fileBytes\": " + std::to_string(bytes) +
-                  ",\n  \"formatVersion\": " + std::to_string(version) + ",\n";
+                  ",\n  \"formatVersion\": " + std::to_string(version) +
+                  ",\n  \"designMeshTriangles\": " + std::to_string(design) + ",\n";
     return in;
   }
   io::LoadPartReport report;

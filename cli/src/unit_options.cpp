@@ -48,15 +48,17 @@ bool warnIfOtherUnit(const std::filesystem::path& file, double fileDiagonal,
 }
 
 ddf::DisplacementField loadPartInUnit(const std::filesystem::path& path, io::LoadPartParams params,
-                                      const char* label, io::LoadPartReport* report) {
+                                      const char* label, io::LoadPartReport* report,
+                                      ddf::TriangleMesh* inputMesh) {
   params.progress = consoleProgress(label);
   io::LoadPartReport local;
   io::LoadPartReport& r = report ? *report : local;
-  ddf::DisplacementField part = io::loadPart(path, params, &r);
+  io::LoadedPart part = io::loadPartWithInput(path, params, &r);
   endProgressLine();
   // A CAD file states its unit, so its size needs no second opinion.
   if (r.converted && !r.unitFromFile) warnIfOtherUnit(path, r.fileDiagonal, params.unit);
-  return part;
+  if (inputMesh) *inputMesh = std::move(part.inputMesh);
+  return std::move(part.ddf);
 }
 
 planning::Project openPartInUnit(const std::filesystem::path& path, io::LoadPartParams params,

@@ -37,9 +37,12 @@ bool warnIfOtherUnit(const std::filesystem::path& file, double fileDiagonal,
 /// @brief io::loadPart of @p path in params.unit (set it from unitOption), with a console
 /// progress line labelled @p label; warns as warnIfOtherUnit for a converted mesh file.
 /// @param report if not null, receives the load report.
+/// @param inputMesh if not null, receives the triangles the part was converted from (mm; for a
+/// .ddf file the design mesh it stores, if any).
 /// @throws as io::loadPart.
 ddf::DisplacementField loadPartInUnit(const std::filesystem::path& path, io::LoadPartParams params,
-                                      const char* label, io::LoadPartReport* report = nullptr);
+                                      const char* label, io::LoadPartReport* report = nullptr,
+                                      ddf::TriangleMesh* inputMesh = nullptr);
 
 /// @brief io::openProject of a part file (.ddf, mesh or CAD) in params.unit, with the progress
 /// line and the size warning of loadPartInUnit(): the part with its design mesh and CAD faces,

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// ddfcam: the metadata section of a .ddf file: source unit and CAD faces of the support.
+// ddfcam: the metadata section of a .ddf file: source unit, CAD faces of the support and the
+// design mesh.
 #include "ddf_metadata.h"
 
 #include <ddfcam/error.h>
@@ -7,6 +8,7 @@
 #include "byte_codec.h"
 
 #include <array>
+#include <bit>
 #include <limits>
 
 namespace ddfcam::io::detail {
@@ -29,6 +31,8 @@ class SectionReader {
     const std::uint64_t length = unsignedValue(4, what);
     return std::string(take(static_cast<std::size_t>(length), what), length);
   }
+  bool atEnd() const { return rest_.empty(); }
+  double real(const char* what) { return std::bit_cast<double>(unsignedValue(8, what)); }
   [[noreturn]] void fail(const std::string& what) const {
     throw IoError(name_ + ": metadata section: " + what);
   }
@@ -44,6 +48,38 @@ class SectionReader {
   std::string_view rest_;
   const std::string& name_;
 };
+
+void putDesignMesh(std::string& section, const std::optional<ddf::TriangleMesh>& mesh) {
+  putU64(section, mesh ? mesh->vertices.size() : 0);
+  if (mesh)
+    for (const ddf::Vec3& p : mesh->vertices)
+      for (int c = 0; c < 3; ++c) putF64(section, p[c]);
+  putU64(section, mesh ? mesh->triangles.size() : 0);
+  if (mesh)
+    for (const auto& t : mesh->triangles)
+      for (const int v : t) putU32(section, static_cast<std::uint32_t>(v));
+}
+
+std::optional<ddf::TriangleMesh> readDesignMesh(SectionReader& in, std::size_t sectionBytes) {
+  const std::uint64_t vertices = in.unsignedValue(8, "the design mesh's vertex count");
+  if (vertices > sectionBytes / 24) in.fail("implausible design mesh vertex count");
+  ddf::TriangleMesh mesh;
+  mesh.vertices.resize(vertices);
+  for (ddf::Vec3& p : mesh.vertices)
+    for (int c = 0; c < 3; ++c) p[c] = in.real("the design mesh's vertices");
+  const std::uint64_t triangles = in.unsignedValue(8, "the design mesh's triangle count");
+  if (triangles > sectionBytes / 12) in.fail("implausible design mesh triangle count");
+  mesh.triangles.resize(triangles);
+  for (auto& t : mesh.triangles)
+    for (int& v : t) {
+      const std::uint64_t index = in.unsignedValue(4, "the design mesh's triangles");
+      if (index >= vertices)
+        in.fail("design mesh vertex " + std::to_string(index) + " of " + std::to_string(vertices));
+      v = static_cast<int>(index);
+    }
+  if (vertices == 0 && triangles == 0) return std::nullopt;
+  return mesh;
+}
 
 }  // namespace
 
@@ -85,6 +121,7 @@ void putDdfMetadata(std::string& out, const DdfMetadata& metadata) {
   putU64(section, metadata.cadFaceOfSupportFace.size());
   for (const int cad : metadata.cadFaceOfSupportFace)
     putU32(section, static_cast<std::uint32_t>(cad));
+  putDesignMesh(section, metadata.designMesh);
   if (section.size() > std::numeric_limits<std::uint32_t>::max())
     throw InvalidInput("DDF metadata: section longer than 4 GiB");
   putU32(out, static_cast<std::uint32_t>(section.size()));
@@ -111,6 +148,7 @@ DdfMetadata readDdfMetadata(std::string_view section, int faceCount,
   metadata.cadFaceOfSupportFace.resize(faces);
   for (int& cad : metadata.cadFaceOfSupportFace)
     cad = static_cast<std::int32_t>(static_cast<std::uint32_t>(in.unsignedValue(4, "CAD faces")));
+  if (!in.atEnd()) metadata.designMesh = readDesignMesh(in, section.size());
   try {
     checkDdfMetadata(metadata, faceCount);
   } catch (const InvalidInput& e) {

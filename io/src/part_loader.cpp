@@ -27,9 +27,7 @@ bool isDdfFile(const std::filesystem::path& path) {
 /// @p progress mapped from [0, 1] onto [from, to] of the whole load (none stays none).
 ProgressCallback scaledProgress(const ProgressCallback& progress, double from, double to) {
   if (!progress) return nullptr;
-  return [&progress, from, to](double fraction) {
-    return progress(from + (to - from) * fraction);
-  };
+  return [&progress, from, to](double fraction) { return progress(from + (to - from) * fraction); };
 }
 
 ddf::ConversionParams conversionWithProgress(const LoadPartParams& params) {
@@ -146,6 +144,7 @@ LoadedPart loadPartWithInput(const std::filesystem::path& path, const LoadPartPa
       local.unitFromFile = metadata.stored;
       local.cadFaceOfSupportFace = std::move(metadata.cadFaceOfSupportFace);
       local.cadFaceNames = std::move(metadata.cadFaceNames);
+      if (metadata.designMesh) part.inputMesh = std::move(*metadata.designMesh);
     } else if (isCadFile(path)) {
       part = convertCad(path, params, local);
     } else {

@@ -42,9 +42,9 @@ planning::Project openProject(const std::filesystem::path& path, const LoadPartP
   project.sourceUnit = report.unit;
   project.cadFaceOfSupportFace = report.cadFaceOfSupportFace;
   project.cadFaceNames = report.cadFaceNames;
-  // The converted triangles (the scaled mesh, or a CAD model's tessellation) are the design:
-  // the engineer measures the part against what was delivered.
-  if (report.converted) project.designMesh = std::move(part.inputMesh);
+  // The converted triangles (the scaled mesh, or a CAD model's tessellation, also as stored in
+  // a .ddf file) are the design: the engineer measures the part against what was delivered.
+  if (!part.inputMesh.triangles.empty()) project.designMesh = std::move(part.inputMesh);
   project.states.push_back({"stock", project.part->allHeights()});
   if (out) *out = std::move(report);
   return project;

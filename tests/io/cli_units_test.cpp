@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // ddfcam-cli convert and info with --units and the conversion options: a part in metres read
 // with --units m gives the DDF of the same part in mm, the size warning names --units, and
-// info reports the raster spacing, the crust reach, the source unit and the CAD faces.
+// info reports the raster spacing, the crust reach, the source unit and the CAD faces; a reduced
+// .ddf keeps its input mesh, from which curvature takes the part's curvature.
 #include <ddfcam/io/ddf_file.h>
 #include <ddfcam/io/mesh_io.h>
 
@@ -10,6 +11,12 @@
 
 #include "../support/test_meshes.h"
 #include "cli_convert_support.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace ddfcam::io {
 namespace {
@@ -192,6 +199,54 @@ TEST(CliUnits, ConvertHelpNamesTheUnitAndConversionOptions) {
   for (const char* option :
        {"--units", "--support reduced|input", "--tolerance", "--raster-spacing", "--stock"})
     EXPECT_THAT(help.out, HasSubstr(option));
+}
+
+}  // namespace
+}  // namespace ddfcam::io
+
+namespace ddfcam::io {
+namespace {
+
+using test::runCli;
+using ::testing::HasSubstr;
+
+TEST(CliCurvature, ReducedDdfKeepsItsMeshAndShowsItsCurvature) {
+  // convert keeps the input mesh in the .ddf file, so curvature of the reduced part fits the
+  // mesh's vertices (the raster differences of its flat-triangle heights spike at the edges).
+  test::ScratchDir dir;
+  constexpr double kR = 20.0, kTube = 6.0;
+  writeMesh(test::torusMesh(kR, kTube, 120, 48), dir / "torus.off");
+  const auto convert = runCli(dir, {"convert", (dir / "torus.off").string(), "-o",
+                                    (dir / "torus.ddf").string(), "--support", "reduced"});
+  ASSERT_EQ(convert.exitCode, 0) << convert.err;
+  DdfMetadata metadata;
+  const ddf::DisplacementField part = readDdf(dir / "torus.ddf", &metadata);
+  ASSERT_TRUE(metadata.designMesh.has_value());
+  EXPECT_EQ(metadata.designMesh->triangles.size(), 11520u);
+  EXPECT_LT(part.faceCount(), 11520 / 4);
+  const auto info = runCli(dir, {"info", (dir / "torus.ddf").string()});
+  ASSERT_EQ(info.exitCode, 0) << info.err;
+  EXPECT_THAT(info.out, HasSubstr(", design mesh of 11520 triangles\n"));
+  const auto curvature = runCli(dir, {"curvature", (dir / "torus.ddf").string(), "-o",
+                                      (dir / "k.vtp").string(), "--csv", (dir / "k.csv").string()});
+  ASSERT_EQ(curvature.exitCode, 0) << curvature.err;
+  EXPECT_THAT(curvature.out, HasSubstr("vertex quadric fits of the mesh the part came from"));
+  // Oracle: the torus' curvature at every CSV row (x, y, z, k_max, k_min in columns 4..8).
+  std::istringstream rows(test::readBytes(dir / "k.csv"));
+  std::string line;
+  std::getline(rows, line);  // header
+  double worst = 0.0;
+  std::size_t count = 0;
+  for (; std::getline(rows, line); ++count) {
+    std::vector<double> v;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::stod(cell));
+    ASSERT_GE(v.size(), 9u) << line;
+    const auto [k1, k2] = test::torusCurvature(kR, kTube, ddf::Vec3(v[4], v[5], v[6]));
+    worst = std::max({worst, std::abs(v[7] - k1), std::abs(v[8] - k2)});
+  }
+  ASSERT_GT(count, 10000u);
+  EXPECT_LT(worst, 0.02 / kTube);
 }
 
 }  // namespace

@@ -70,18 +70,45 @@ TEST(DdfMetadata, SectionHasTheDocumentedLayout) {
   DdfMetadata unitOnly;
   unitOnly.sourceUnit = ddfcam::LengthUnit::Metre;
   const std::string bytes = encodeDdf(field, unitOnly);
-  // Version 2 in the header; body as version 1; then L = 16: unit 2, no names, no faces.
+  // Version 2 in the header; body as version 1; then L = 32: unit 2, no names, no faces, no
+  // design mesh (0 vertices, 0 triangles).
   EXPECT_EQ(u32At(plain, 8), 1u);
   EXPECT_EQ(u32At(bytes, 8), 2u);
   const std::size_t body = plain.size() - 4;
   EXPECT_EQ(bytes.substr(12, body - 12), plain.substr(12, body - 12));
-  ASSERT_EQ(bytes.size(), plain.size() + 4 + 16);
-  EXPECT_EQ(u32At(bytes, body), 16u);
+  ASSERT_EQ(bytes.size(), plain.size() + 4 + 32);
+  EXPECT_EQ(u32At(bytes, body), 32u);
   EXPECT_EQ(u32At(bytes, body + 4), 2u);
   EXPECT_EQ(u32At(bytes, body + 8), 0u);
-  EXPECT_EQ(bytes.substr(body + 12, 8), std::string(8, '\0'));
+  EXPECT_EQ(bytes.substr(body + 12, 24), std::string(24, '\0'));
   EXPECT_EQ(u32At(bytes, bytes.size() - 4),
             crc32(std::as_bytes(std::span(bytes.data(), bytes.size() - 4))));
+}
+
+TEST(DdfMetadata, DesignMeshRoundTripsAndSectionsWithoutItStillRead) {
+  const auto field = octahedronField();
+  DdfMetadata withMesh = cadMetadata();
+  withMesh.designMesh = test::boxMesh(ddf::Vec3(-1, -2, -3), ddf::Vec3(0.1, 0.2, 1.0 / 3.0));
+  DdfMetadata back;
+  test::expectBitwiseEqual(decodeDdf(encodeDdf(field, withMesh), "memory", &back), field);
+  expectSameMetadata(back, withMesh);
+  ASSERT_TRUE(back.designMesh.has_value());
+  EXPECT_EQ(back.designMesh->vertices, withMesh.designMesh->vertices);  // bit-identical
+  EXPECT_EQ(back.designMesh->triangles, withMesh.designMesh->triangles);
+  // A section as written before the design mesh member (it ends after the CAD faces).
+  std::string bytes = encodeDdf(field, cadMetadata());
+  const std::size_t body = encodeDdf(field).size() - 4;
+  bytes.erase(bytes.size() - 4 - 16, 16);
+  putU32At(bytes, body, u32At(bytes, body) - 16);
+  back = DdfMetadata{};
+  test::expectBitwiseEqual(decodeDdf(resealed(bytes), "memory", &back), field);
+  expectSameMetadata(back, cadMetadata());
+  EXPECT_FALSE(back.designMesh.has_value());
+  // A triangle naming a vertex the mesh does not have is named.
+  std::string bad = encodeDdf(field, withMesh);
+  putU32At(bad, bad.size() - 8, 99);
+  EXPECT_THAT(test::ioErrorMessage([&] { decodeDdf(resealed(bad), "p.ddf"); }),
+              HasSubstr("p.ddf: metadata section: design mesh vertex 99 of 8"));
 }
 
 TEST(DdfMetadata, OldFilesReadWithDefaultMetadata) {
@@ -126,7 +153,8 @@ TEST(DdfMetadata, DamagedSectionIsNamed) {
   EXPECT_THAT(test::ioErrorMessage([&] { decodeDdf(resealed(longer), "p.ddf"); }),
               HasSubstr("truncated .ddf file"));
   std::string face = bytes;
-  putU32At(face, bytes.size() - 8, 7);  // last support face names CAD face 7 of 3
+  // The last support face (before the empty design mesh member) names CAD face 7 of 3.
+  putU32At(face, bytes.size() - 4 - 16 - 4, 7);
   EXPECT_THAT(test::ioErrorMessage([&] { decodeDdf(resealed(face), "p.ddf"); }),
               HasSubstr("support face 7 names CAD face 7 of 3"));
 }

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <ddfcam/ddf/displacement_field.h>
+#include <ddfcam/ddf/triangle_mesh.h>
 #include <ddfcam/length_unit.h>
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,6 +29,10 @@ struct DdfMetadata {
   std::vector<int> cadFaceOfSupportFace;
   /// Display names of the CAD faces, e.g. "face 12 (B-spline)". Default empty.
   std::vector<std::string> cadFaceNames;
+  /// The triangles the field was converted from (mm, part frame), or none: kept so that the
+  /// curvature of a reduced support comes from them (planning::computeDesignCurvature) and the
+  /// part can be compared with what was delivered. Default none.
+  std::optional<ddf::TriangleMesh> designMesh;
   /// Set by decodeDdf/readDdf: whether the file held a metadata section (version 2); when
   /// false the other members keep their defaults. Ignored when writing.
   bool stored = false;
@@ -53,7 +59,9 @@ struct DdfMetadata {
 /// Version 2 (written when metadata is given) has the same layout with the metadata section
 /// between the heights and the checksum: u32 byte count L, then L bytes: u32 source unit (0 mm,
 /// 1 cm, 2 m, 3 in), u32 N CAD face names, each a u32 byte count and UTF-8 bytes, u64 K (0 or
-/// F) and K i32 CAD faces of the support faces (-1 or < N). A reader ignores bytes of the
+/// F) and K i32 CAD faces of the support faces (-1 or < N), then the design mesh: u64 vertex
+/// count W, 24 W f64 x y z (mm), u64 triangle count T, 12 T u32 vertex indices (W = T = 0: none;
+/// sections written before this member end after the CAD faces). A reader ignores bytes of the
 /// section after the members it knows, so later members extend it without a version bump.
 /// @return the file content (version 1).
 std::string encodeDdf(const ddf::DisplacementField& field);

@@ -79,7 +79,8 @@ ddf::DisplacementField loadPart(const std::filesystem::path& path,
 /// @brief A loaded part and the triangles it was converted from.
 struct LoadedPart {
   ddf::DisplacementField ddf;  ///< the part, mm
-  /// The input triangles in mm: the scaled mesh file or the CAD tessellation (empty for .ddf).
+  /// The input triangles in mm: the scaled mesh file or the CAD tessellation; for a .ddf file
+  /// the design mesh it stores (DdfMetadata::designMesh), else empty.
   ddf::TriangleMesh inputMesh;
 };
 

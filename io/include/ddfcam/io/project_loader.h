@@ -20,7 +20,8 @@ bool canOpenAsProject(const std::filesystem::path& path);
 /// project on that part (partName = file name, sourcePath = @p path, one simulation state
 /// "stock" with the initial heights; sourceUnit = the unit the file was read in). A mesh file
 /// (scaled to mm) or a CAD model's tessellation is kept as the design mesh, the surface the part
-/// is compared with; a CAD model also sets cadFaceOfSupportFace and cadFaceNames.
+/// is compared with, as is the design mesh a .ddf file stores; a CAD model (or a .ddf file
+/// converted from one) also sets cadFaceOfSupportFace and cadFaceNames.
 /// @param params conversion parameters and progress for part files (ignored for projects).
 /// @param report if not null, receives what loading the part did (converted = false for a
 /// project or a .ddf file): a mesh's repairs and whether it became a valid DDF.
