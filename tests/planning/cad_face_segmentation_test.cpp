@@ -65,7 +65,9 @@ TEST(CadFaceSegmentation, EveryCadFaceIsARegionEvenASingleSupportFace) {
       ++covered[f];
     }
     EXPECT_EQ(region.name.rfind(part.names[label], 0), 0u) << region.name;
-    if (label == 2) EXPECT_EQ(region.faces, std::vector<int>{part.lonelyFace});
+    if (label == 2) {
+      EXPECT_EQ(region.faces, std::vector<int>{part.lonelyFace});
+    }
   }
   for (int f = 0; f < part.ddf.faceCount(); ++f) EXPECT_EQ(covered[f], 1) << f;
 }
@@ -77,8 +79,9 @@ TEST(CadFaceSegmentation, RaisedMinFacesMergesTheSmallFaceIntoItsNeighbour) {
   const std::vector<Region> regions = segmentByCadFace(part.ddf, part.cadFace, part.names, params);
   ASSERT_EQ(regions.size(), 2u);
   for (const Region& region : regions)
-    if (std::count(region.faces.begin(), region.faces.end(), part.lonelyFace) == 1)
+    if (std::count(region.faces.begin(), region.faces.end(), part.lonelyFace) == 1) {
       EXPECT_EQ(region.name.rfind(part.names[0], 0), 0u) << region.name;
+    }
 }
 
 TEST(CadFaceSegmentation, FacesWithoutCadFaceFormTheirOwnRegion) {
