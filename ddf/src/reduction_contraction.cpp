@@ -17,7 +17,8 @@ Refusal SupportReducer::attempt(SupportMesh::EdgeHandle eh) {
   const auto heh = mesh_.halfedge_handle(eh, 0);
   const int a = mesh_.from_vertex_handle(heh).idx(), b = mesh_.to_vertex_handle(heh).idx();
   if (kept_[a] || kept_[b] || mesh_.is_boundary(eh)) return Refusal::Boundary;
-  Tentative t;
+  Tentative& t = scratch_;
+  t.reset();
   t.region = contractionRegion(mesh_, heh);
   if (const long since = edgeRefusedAt_[eh.idx()]; since >= 0 && unchangedSince(t.region, since))
     return Refusal::Skipped;
@@ -156,7 +157,8 @@ void SupportReducer::gatherCandidates(Tentative& t) {
 Refusal SupportReducer::rasterNewFaces(Tentative& t) const {
   const std::size_t faces = t.faces.size();
   t.items.resize(faces);
-  std::vector<Refusal> why(faces, Refusal::None);
+  std::vector<Refusal>& why = t.why;
+  why.assign(faces, Refusal::None);
   std::atomic<std::size_t> firstRefused{faces};
   tbb::parallel_for(std::size_t{0}, faces, [&](std::size_t i) {
     if (i > firstRefused.load(std::memory_order_relaxed)) return;
@@ -260,7 +262,7 @@ void SupportReducer::commit(Tentative& t) {
   }
   for (std::size_t i = 0; i < r.modified.size(); ++i) {
     const int f = r.modified[i];
-    faceItems_[f] = std::move(t.items[i]);
+    faceItems_[f].items.swap(t.items[i].items);
     hash_.set(f, crustBox(t.faces[i].corners));
     faceVersion_[f] = clock_;
   }

@@ -47,51 +47,78 @@ void offerHit(const FaceCorners& face, int n, int i, int k, std::size_t idx, dou
 // more than testing every point.
 constexpr int kIntervalRowLength = 24;
 
+// Raster points of a row whose hit test runs in one vectorisable pass.
+constexpr int kRowChunk = 32;
+
 // Tests the raster points first..last of row @p k of one (face, item) pair against the linear
-// forms of sec. 5.2 and offers the hits. Returns whether any ray hit within |h| <= 1.
+// forms of sec. 5.2 and offers the hits. Returns whether any ray hit within |h| <= 1. The
+// heights and the smallest lambda of a chunk of points are computed without branches, so the
+// compiler vectorises them (the same operations per point, hence the same values); a zero
+// denominator gives an infinite or NaN height, which fails the test.
 bool shootRow(const FaceCorners& face, int n, const PairForms& f, int k, int first, int last,
               std::size_t rowStart, int item, const ReductionItems& items, FaceItems& out) {
   const double nk = f.n.base + k * f.n.dk, dk = f.d.base + k * f.d.dk;
-  std::array<double, 3> ak, bk;
-  for (int j = 0; j < 3; ++j)
-    ak[j] = f.a[j].base + k * f.a[j].dk, bk[j] = f.b[j].base + k * f.b[j].dk;
+  const double ni = f.n.di, di = f.d.di;
+  const double a0 = f.a[0].base + k * f.a[0].dk, b0 = f.b[0].base + k * f.b[0].dk;
+  const double a1 = f.a[1].base + k * f.a[1].dk, b1 = f.b[1].base + k * f.b[1].dk;
+  const double a2 = f.a[2].base + k * f.a[2].dk, b2 = f.b[2].base + k * f.b[2].dk;
+  const double ai0 = f.a[0].di, ai1 = f.a[1].di, ai2 = f.a[2].di;
+  const double bi0 = f.b[0].di, bi1 = f.b[1].di, bi2 = f.b[2].di;
+  std::array<double, kRowChunk> height, lambda;
   bool any = false;
-  for (int i = first; i <= last; ++i) {
-    const double d = dk + i * f.d.di;
-    if (d == 0.0) continue;
-    const double h = (nk + i * f.n.di) / d;
-    if (!(std::abs(h) <= 1.0 - kHeightMargin)) continue;
-    bool inside = true;
-    for (int j = 0; j < 3 && inside; ++j)
-      inside = ak[j] + i * f.a[j].di + h * (bk[j] + i * f.b[j].di) >= -kLambdaTolerance;
-    if (!inside) continue;
-    any = true;
-    offerHit(face, n, i, k, rowStart + i, h, item, items, out);
+  for (int from = first; from <= last; from += kRowChunk) {
+    const int count = std::min(last - from + 1, kRowChunk);
+    for (int c = 0; c < count; ++c) {
+      const double i = from + c;
+      const double h = (nk + i * ni) / (dk + i * di);
+      const double l0 = a0 + i * ai0 + h * (b0 + i * bi0);
+      const double l1 = a1 + i * ai1 + h * (b1 + i * bi1);
+      const double l2 = a2 + i * ai2 + h * (b2 + i * bi2);
+      height[c] = h, lambda[c] = std::min(l0, std::min(l1, l2));
+    }
+    // A NaN lambda needs a non-finite height, which the height test refuses first.
+    for (int c = 0; c < count; ++c)
+      if (std::abs(height[c]) <= 1.0 - kHeightMargin && lambda[c] >= -kLambdaTolerance) {
+        any = true;
+        offerHit(face, n, from + c, k, rowStart + from + c, height[c], item, items, out);
+      }
   }
   return any;
 }
 
-// The index range of row @p k (length @p length) that can hold a hit, or false when none can:
-// where |h| <= 1, and where lambda_j = a_j + h b_j can reach -tol for every j. On a row without
-// a pole h is monotone, so it lies between its values at the range's ends; then lambda_j is at
-// most a_j + max(h_lo b_j, h_hi b_j), a maximum of two linear functions of i, largest at an end
-// of the range. Exact as a necessary condition, and far cheaper than the roots.
-bool rowRange(const PairForms& f, int k, int length, int& first, int& last) {
+// The slopes along a row of the conditions N - D and -N - D of rowRange, and their inverses.
+struct HeightSlopes {
+  std::array<double, 2> g, perG;
+};
+
+HeightSlopes heightSlopes(const PairForms& f) {
+  HeightSlopes h;
+  h.g = {f.n.di - f.d.di, -f.n.di - f.d.di};
+  for (int q = 0; q < 2; ++q) h.perG[q] = h.g[q] != 0.0 ? 1.0 / h.g[q] : 0.0;
+  return h;
+}
+
+// Narrows the index range first..last of row @p k to where a hit is possible, or returns false
+// when none is: where |h| <= 1, and where lambda_j = a_j + h b_j can reach -tol for every j. On
+// a range without a pole h is monotone, so it lies between its values at the range's ends; then
+// lambda_j is at most a_j + max(h_lo b_j, h_hi b_j), a maximum of two linear functions of i,
+// largest at an end of the range. Exact as a necessary condition, and far cheaper than the
+// roots; the narrower the range it starts from (the item's window), the tighter.
+bool rowRange(const PairForms& f, const HeightSlopes& slopes, int k, int& first, int& last) {
   const double n0 = f.n.base + k * f.n.dk, d0 = f.d.base + k * f.d.dk;
-  const double last_ = length - 1;
-  const double dEnd = d0 + last_ * f.d.di;
-  first = 0, last = length - 1;
-  if (!(d0 * dEnd > 0.0)) return true;  // a pole or a zero in the row: no cheap bound
-  const double s = d0 > 0.0 ? 1.0 : -1.0;
-  double lo = 0.0, hi = last_;
+  double lo = first, hi = last;
+  const double dLo = d0 + lo * f.d.di, dHi = d0 + hi * f.d.di;
+  if (!(dLo * dHi > 0.0)) return true;  // a pole or a zero in the range: no cheap bound
+  const double s = dLo > 0.0 ? 1.0 : -1.0;
   // s (N - D) <= 0 and s (-N - D) <= 0, both linear in i.
-  for (const double sign : {1.0, -1.0}) {
-    const double g0 = s * (sign * n0 - d0), g1 = s * (sign * f.n.di - f.d.di);
+  for (int q = 0; q < 2; ++q) {
+    const double x = (q == 0 ? n0 : -n0) - d0, g0 = s * x, g1 = s * slopes.g[q];
     if (g1 == 0.0) {
       if (g0 > 0.0) return false;
       continue;
     }
-    const double root = -g0 / g1;
+    // The root -g0 / g1 by a product: its ulp is far inside the one-step margin.
+    const double root = -x * slopes.perG[q];
     if (g1 > 0.0)
       hi = std::min(hi, std::ceil(root) + 1.0);
     else
@@ -123,9 +150,11 @@ bool rowRange(const PairForms& f, int k, int length, int& first, int& last) {
 // compares per row cull rows and points before the row's exact bounds are computed.
 struct RowSlabs {
   Vec3 across, along;
+  double acrossNorm = 0.0, alongNorm = 0.0;
   std::vector<double> lo, hi;        // per row, the rays' interval on `across`
   std::vector<double> start, reach;  // per row, point 0 on `along`, and max |v . along|
   double step = 0.0;                 // change on `along` per raster step of a row
+  double perStep = 0.0;              // 1 / step (0 when step is 0)
   // The rows' feet lie on `across` at base + k slope; no ray strays further than spread.
   double base = 0.0, slope = 0.0, spread = 0.0;
 };
@@ -137,7 +166,9 @@ RowSlabs rowSlabs(const FaceCorners& face, int n) {
   // Rows keep mu_3 = k / n: they run parallel to p[0] - p[1], from p[1]'s side (i = 0).
   s.along = p[0] - p[1];
   s.across = (p[1] - p[0]).cross(p[2] - p[0]).cross(s.along);
+  s.acrossNorm = s.across.norm(), s.alongNorm = s.along.norm();
   s.step = s.along.squaredNorm() / n;
+  if (s.step > 0.0) s.perStep = 1.0 / s.step;
   for (auto* x : {&s.lo, &s.hi, &s.start, &s.reach}) x->resize(n + 1);
   s.base = p[1].dot(s.across), s.slope = (p[2] - p[1]).dot(s.across) / n;
   for (int j = 0; j < 3; ++j) s.spread = std::max(s.spread, std::abs(v[j].dot(s.across)));
@@ -168,8 +199,8 @@ ItemWindow itemWindow(const RowSlabs& s, const ReductionItems& items, int item) 
     w.alongLo = std::min(w.alongLo, y), w.alongHi = std::max(w.alongHi, y);
   }
   // A hit may lie kLambdaTolerance (barycentric) outside the item, and rounding: widen.
-  const double size = 1e-6 * items.boxes[item].diagonal().norm();
-  const double a = size * s.across.norm(), b = size * s.along.norm();
+  const double size = 1e-6 * items.diagonals[item];
+  const double a = size * s.acrossNorm, b = size * s.alongNorm;
   w.acrossLo -= a, w.acrossHi += a, w.alongLo -= b, w.alongHi += b;
   return w;
 }
@@ -194,8 +225,9 @@ bool windowRange(const RowSlabs& s, const ItemWindow& w, int k, int length, int&
   if (s.hi[k] < w.acrossLo || s.lo[k] > w.acrossHi) return false;
   first = 0, last = length - 1;
   if (!(s.step > 0.0)) return true;
-  const double lo = std::floor((w.alongLo - s.reach[k] - s.start[k]) / s.step);
-  const double hi = std::ceil((w.alongHi + s.reach[k] - s.start[k]) / s.step);
+  // A product for the quotient: its ulp is far below the window's widening.
+  const double lo = std::floor((w.alongLo - s.reach[k] - s.start[k]) * s.perStep);
+  const double hi = std::ceil((w.alongHi + s.reach[k] - s.start[k]) * s.perStep);
   if (lo > last || hi < first) return false;
   first = static_cast<int>(std::max(0.0, lo));
   last = static_cast<int>(std::min(static_cast<double>(last), hi));
@@ -209,14 +241,13 @@ bool shootPair(const FaceCorners& face, int n, const PairForms& f, int item,
   bool any = false;
   const Raster raster{n + 1};
   std::array<std::pair<int, int>, 5> ranges;
+  const HeightSlopes slopes = heightSlopes(f);
   for (int k = kFirst; k <= kLast; ++k) {
     const int length = n - k + 1;
     const std::size_t rowStart = raster.rowOffset(k);
-    int first = 0, last = 0, from = 0, to = 0;
-    const bool open =
-        windowRange(slabs, w, k, length, first, last) && rowRange(f, k, length, from, to);
-    first = std::max(first, from), last = std::min(last, to);
-    if (open && first <= last) {
+    int first = 0, last = 0;
+    if (windowRange(slabs, w, k, length, first, last) && rowRange(f, slopes, k, first, last) &&
+        first <= last) {
       if (last - first + 1 < kIntervalRowLength) {
         any |= shootRow(face, n, f, k, first, last, rowStart, item, items, out);
       } else {
@@ -231,32 +262,52 @@ bool shootPair(const FaceCorners& face, int n, const PairForms& f, int item,
   return any;
 }
 
-bool separatedAlong(const FaceCorners& face, const ReductionItems& items, int item,
-                    const Vec3& axis) {
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (int i = 0; i < 3; ++i)
-    for (const Vec3& c : {Vec3(face.p[i] + face.v[i]), Vec3(face.p[i] - face.v[i])}) {
-      const double x = c.dot(axis);
-      lo = std::min(lo, x), hi = std::max(hi, x);
-    }
-  double tLo = std::numeric_limits<double>::infinity(), tHi = -tLo;
-  for (int k = 0; k < 3; ++k) {
-    const double x = items.corner(item, k).dot(axis);
-    tLo = std::min(tLo, x), tHi = std::max(tHi, x);
+// The hull of the +-1 crust (its six corners p_i +- v_i) with its extent along the axes that
+// depend on the face alone (the face normal, the side-wall normals), computed once per face
+// rather than once per candidate item.
+struct CrustHull {
+  std::array<Vec3, 6> corners;
+  std::array<Vec3, 4> axes;
+  std::array<double, 4> lo, hi;
+};
+
+void extentAlong(std::span<const Vec3> points, const Vec3& axis, double& lo, double& hi) {
+  lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Vec3& c : points) {
+    const double x = c.dot(axis);
+    lo = std::min(lo, x), hi = std::max(hi, x);
   }
+}
+
+CrustHull crustHull(const FaceCorners& face) {
+  const auto& p = face.p;
+  CrustHull hull;
+  for (int i = 0; i < 3; ++i)
+    hull.corners[2 * i] = p[i] + face.v[i], hull.corners[2 * i + 1] = p[i] - face.v[i];
+  hull.axes[0] = (p[1] - p[0]).cross(p[2] - p[0]);
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    hull.axes[1 + i] = (p[j] - p[i]).cross(face.v[i] + face.v[j]);
+  }
+  for (int a = 0; a < 4; ++a) extentAlong(hull.corners, hull.axes[a], hull.lo[a], hull.hi[a]);
+  return hull;
+}
+
+bool itemApartAlong(const ReductionItems& items, int item, const Vec3& axis, double lo, double hi) {
+  const std::array<Vec3, 3> t{items.corner(item, 0), items.corner(item, 1), items.corner(item, 2)};
+  double tLo = 0.0, tHi = 0.0;
+  extentAlong(t, axis, tLo, tHi);
   return tHi < lo || hi < tLo;
 }
 
 // The +-1 crust lies in the hull of its six corners p_i +- v_i: an axis separating that hull
 // from the item (its normal, the face normal, the side-wall normals) proves no ray hits it.
-bool itemSeparated(const FaceCorners& face, const ReductionItems& items, int item) {
-  const auto& p = face.p;
-  if (separatedAlong(face, items, item, items.normals[item])) return true;
-  if (separatedAlong(face, items, item, (p[1] - p[0]).cross(p[2] - p[0]))) return true;
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
-    if (separatedAlong(face, items, item, (p[j] - p[i]).cross(face.v[i] + face.v[j]))) return true;
-  }
+bool itemSeparated(const CrustHull& hull, const ReductionItems& items, int item) {
+  double lo = 0.0, hi = 0.0;
+  extentAlong(hull.corners, items.normals[item], lo, hi);
+  if (itemApartAlong(items, item, items.normals[item], lo, hi)) return true;
+  for (int a = 0; a < 4; ++a)
+    if (itemApartAlong(items, item, hull.axes[a], hull.lo[a], hull.hi[a])) return true;
   return false;
 }
 
@@ -290,6 +341,7 @@ ReductionItems ReductionItems::fromMesh(const SupportMesh& mesh) {
     Eigen::AlignedBox3d box(a);
     box.extend(b), box.extend(c);
     out.boxes.push_back(box);
+    out.diagonals.push_back(box.diagonal().norm());
   }
   return out;
 }
@@ -309,11 +361,12 @@ void rasterFace(const FaceCorners& face, int m, const ReductionItems& items,
   out.items.clear();
   const Eigen::AlignedBox3d box = crustBox(face);
   const RowSlabs slabs = rowSlabs(face, n);
+  const CrustHull hull = crustHull(face);
   for (int t : candidates) {
     if (!box.intersects(items.boxes[t])) continue;
     const ItemWindow w = itemWindow(slabs, items, t);
     int kFirst = 0, kLast = 0;
-    if (!windowRows(slabs, w, n, kFirst, kLast) || itemSeparated(face, items, t)) continue;
+    if (!windowRows(slabs, w, n, kFirst, kLast) || itemSeparated(hull, items, t)) continue;
     const auto forms = makePairForms(face, items.corner(t, 0), items.corner(t, 1),
                                      items.corner(t, 2), n, KernelMode::Fill);
     if (forms && shootPair(face, n, *forms, t, items, slabs, w, kFirst, kLast, out))

@@ -21,6 +21,7 @@ struct ReductionItems {
   std::vector<std::array<int, 3>> vertices;  ///< per item its three input vertices
   std::vector<Vec3> normals;                 ///< per item its unit normal (zero if degenerate)
   std::vector<Eigen::AlignedBox3d> boxes;    ///< per item its bounds
+  std::vector<double> diagonals;             ///< per item the length of its bounds' diagonal
 
   /// @brief The faces of @p mesh as items (item index = face index).
   static ReductionItems fromMesh(const SupportMesh& mesh);

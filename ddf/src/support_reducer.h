@@ -43,6 +43,10 @@ struct Tentative {
   std::vector<FaceItems> items;             // parallel to region.modified
   std::vector<int> candidates;              // items offered to the re-assignment
   std::vector<int> touchedItems;            // items whose hit count the contraction changes
+  std::vector<Refusal> why;                 // per new face, its refusal by rasterNewFaces
+
+  /// @brief Empties the tentative for the next edge; the item buffers keep their capacity.
+  void reset() { candidates.clear(), touchedItems.clear(); }
 };
 
 /// @brief The reduction's state: the shrinking support with its vectors, the item buffer of
@@ -82,6 +86,8 @@ class SupportReducer {
   std::vector<int> labels_;
   std::vector<char> kept_;
   detail::ReductionItems items_;
+  // Per face its item set only: the per-point hits are needed just while a tentative face is
+  // checked, so they live in scratch_ (for 10^4 input faces they would take hundreds of MB).
   std::vector<FaceItems> faceItems_;
   std::vector<int> hitCount_;
   std::vector<int> delta_;
@@ -98,6 +104,9 @@ class SupportReducer {
   double minCosine_ = 0.0;
   SupportReductionReport report_;
   int attempts_ = 0;
+  // Reused by every attempt: the per-point buffers of the new faces would otherwise be
+  // allocated and faulted in again for each of the ~10^4 tentative contractions.
+  Tentative scratch_;
 };
 
 }  // namespace ddfcam::ddf::detail

@@ -3,7 +3,6 @@
 #include "support_reducer.h"
 
 #include <ddfcam/ddf/displacement_field.h>
-#include <ddfcam/ddf/raster.h>
 #include <ddfcam/ddf/support_reduction.h>
 #include <ddfcam/ddf/v_shooting.h>
 #include <ddfcam/ddf/vector_lengths.h>
@@ -103,7 +102,6 @@ FaceCorners SupportReducer::corners(int face) const {
 // shooting (ties at h = 0 go to the own item).
 void SupportReducer::initialItems() {
   const int faces = static_cast<int>(mesh_.n_faces());
-  const std::size_t points = Raster{params_.resolution}.pointCount();
   faceItems_.assign(faces, {});
   tbb::parallel_for(0, faces, [&](int f) {
     FaceItems& fi = faceItems_[f];
@@ -111,7 +109,6 @@ void SupportReducer::initialItems() {
       for (const auto fh : mesh_.vf_range(vh)) fi.items.push_back(fh.idx());
     std::sort(fi.items.begin(), fi.items.end());
     fi.items.erase(std::unique(fi.items.begin(), fi.items.end()), fi.items.end());
-    fi.hit.assign(points, f), fi.h.assign(points, 0.0);
   });
   // Constraint (a) counts, per item, the faces whose item set holds it.
   for (const FaceItems& fi : faceItems_)
