@@ -351,6 +351,7 @@ void PartImportTest::bladeHoldsHalfAMillimetreOfStockAndRaises() {
   c.unit = LengthUnit::Metre;
   c.toleranceMm = 0.0;  // the default resolution: a quick import
   c.stockMm = 0.5;
+  f_.script.stockOffers.clear();
   QVERIFY(import(path, c));
   QVERIFY2(f_.script.errors.isEmpty(), qPrintable(f_.script.errors.join("\n")));
   const auto& report = f_.window->projectActions().partReport();
