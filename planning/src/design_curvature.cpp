@@ -59,7 +59,9 @@ Vec3 barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   const double d20 = d.dot(e0), d21 = d.dot(e1), det = d00 * d11 - d01 * d01;
   if (!(std::abs(det) > 0.0)) return Vec3(1.0, 0.0, 0.0);
   const double v = (d11 * d20 - d01 * d21) / det, w = (d00 * d21 - d01 * d20) / det;
-  return Vec3(1.0 - v - w, v, w).cwiseMax(0.0) / Vec3(1.0 - v - w, v, w).cwiseMax(0.0).sum();
+  // The foot lies in the triangle; clamping only removes rounding below 0.
+  const Vec3 clamped = Vec3(1.0 - v - w, v, w).cwiseMax(0.0);
+  return clamped / clamped.sum();
 }
 
 // Feet of all raster points of @p part (allHeights layout), in blocks of faces so that
