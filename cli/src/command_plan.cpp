@@ -5,16 +5,14 @@
 #include <ddfcam/io/part_loader.h>
 #include <ddfcam/io/tool_path_csv.h>
 #include <ddfcam/planning/curvature.h>
-#include <ddfcam/planning/flow_field.h>
 #include <ddfcam/planning/path_linking.h>
+#include <ddfcam/planning/pipeline/region_planning.h>
 #include <ddfcam/planning/scallop_spacing.h>
-#include <ddfcam/planning/streamline_fairing.h>
 #include <ddfcam/planning/streamline_path.h>
 
 #include "arguments.h"
 #include "commands.h"
 #include "console.h"
-#include "plan_lines.h"
 #include "plan_tool.h"
 #include "unit_options.h"
 
@@ -91,7 +89,7 @@ struct PlanOptions {
   std::optional<ddfcam::LengthUnit> unit;  ///< --units of a mesh or CAD input
   planning::FlowFieldParams field;
   planning::StreamlineMethod method = planning::StreamlineMethod::Rk4;
-  Seeding seeding = Seeding::Transverse;
+  planning::LineSeeding seeding = planning::LineSeeding::Family;
   std::optional<double> spacingMm;
   std::optional<double> scallopMm;  ///< scallop height, mm: spacing from the curvature
   int smoothWindow = 0;
@@ -157,10 +155,10 @@ void parseLines(const Arguments& args, PlanOptions& o) {
   static constexpr std::array<const char*, 2> kSeedings = {"transverse", "even"};
   // Even seeding covers closed free forms; one transverse line stops at the first singularity.
   const int byMethod = o.method == planning::StreamlineMethod::Rk4 ? 1 : 0;
-  o.seeding =
-      choice(args, "seeding", kSeedings, byMethod) == 0 ? Seeding::Transverse : Seeding::Even;
+  o.seeding = choice(args, "seeding", kSeedings, byMethod) == 0 ? planning::LineSeeding::Family
+                                                                : planning::LineSeeding::Coverage;
   // evenlySpacedStreamlines traces with RK4 only; another method would be silently ignored.
-  if (o.seeding == Seeding::Even && o.method != planning::StreamlineMethod::Rk4)
+  if (o.seeding == planning::LineSeeding::Coverage && o.method != planning::StreamlineMethod::Rk4)
     throw UsageError("--method " + *args.value("method") +
                      " is not available with --seeding even (it traces with rk4 only)");
   o.spacingMm = args.positiveNumber("spacing");
@@ -192,7 +190,7 @@ void checkScallop(const PlanOptions& o) {
         "(at most the roll width) instead");
   if (*o.scallopMm >= *radius)
     throw UsageError("--scallop must be smaller than the ball radius (--radius)");
-  if (o.seeding != Seeding::Even)
+  if (o.seeding != planning::LineSeeding::Coverage)
     throw UsageError("--scallop needs --seeding even (the spacing varies over the part)");
 }
 
@@ -250,34 +248,21 @@ double boxDiagonal(const ddf::DisplacementField& part) {
   return box.isEmpty() ? 1.0 : box.diagonal().norm();
 }
 
-/// Distance between lines: fixed, or from the scallop height and the curvature across the feed.
-struct LineSpacing {
-  double minMm = 0, maxMm = 0;  ///< smallest and largest spacing used, mm
-  double gougingFraction = 0;   ///< share of raster points too concave for the ball (minMm there)
-  std::function<double(const ddf::SurfaceLocation&)> separationAt;  ///< empty: fixed minMm
-};
-
-LineSpacing chooseSpacing(const ddf::DisplacementField& part,
-                          const planning::CurvatureField& curvature,
-                          const planning::LineField& field, const PlanOptions& o) {
-  if (!o.scallopMm) {
-    const double fixed = o.spacingMm.value_or(boxDiagonal(part) / 40.0);
-    return {fixed, fixed, 0.0, {}};
+/// The plan of the whole part the options describe: field, spacing (fixed, default the
+/// bounding-box diagonal / 40, or from the scallop height) and linking order.
+planning::RegionPlan regionPlanOf(const PlanOptions& o, double diagonal) {
+  planning::RegionPlan plan;
+  plan.flowSource = o.field.source;
+  plan.fixedDirection = o.field.fixedDirection;
+  plan.smoothField = o.field.smoothing;
+  plan.smoothnessWeight = o.field.smoothnessWeight;
+  plan.spacingMm = o.spacingMm.value_or(diagonal / 40.0);
+  if (o.scallopMm) {
+    plan.spacingMode = planning::SpacingMode::ScallopTolerance;
+    plan.scallopToleranceMm = *o.scallopMm;
   }
-  std::vector<float> spacing =
-      planning::scallopSpacingField(part, curvature, field, o.tool.tool.radiusMm, *o.scallopMm);
-  const std::optional<double> smallest = planning::smallestFiniteSpacing(spacing);
-  if (!smallest)
-    throw InvalidInput("plan: the ball of radius " + std::to_string(o.tool.tool.radiusMm) +
-                       " mm gouges every concave point of the part; no scallop spacing exists");
-  double largest = *smallest;
-  const auto gouging = std::count_if(spacing.begin(), spacing.end(), [&](float s) {
-    if (std::isfinite(s)) largest = std::max<double>(largest, s);
-    return !std::isfinite(s);
-  });
-  const double fraction = static_cast<double>(gouging) / static_cast<double>(spacing.size());
-  return {*smallest, largest, fraction,
-          planning::spacingFunction(part, std::move(spacing), *smallest)};
+  plan.linking = o.linking;
+  return plan;
 }
 
 /// Milliseconds of each stage, for the summary.
@@ -285,23 +270,8 @@ struct StageTimes {
   double load = 0, curvature = 0, field = 0, lines = 0, paths = 0;
 };
 
-std::vector<planning::Streamline> refineLines(const ddf::DisplacementField& part,
-                                              std::vector<planning::Streamline> lines,
-                                              const PlanOptions& o) {
-  if (o.smoothWindow > 0) lines = planning::smoothOnSurface(part, lines, o.smoothWindow);
-  if (o.fair) {
-    const ProgressCallback progress = consoleProgress("fairing");
-    for (std::size_t l = 0; l < lines.size(); ++l) {
-      reportProgress(progress, static_cast<double>(l) / lines.size());
-      lines[l] = planning::fairStreamline(part, lines[l]);
-    }
-    endProgressLine();
-  }
-  return lines;
-}
-
 void printSummary(const PlanOptions& o, const planning::LinkedPaths& linked, std::size_t rows,
-                  const LineSpacing& spacing, const StageTimes& t) {
+                  const planning::LineSpacing& spacing, const StageTimes& t) {
   const double cutMin = linked.cuttingLengthMm / o.feedMmPerMin;
   const double idleMin = linked.idleLengthMm / o.feedMmPerMin;
   if (o.scallopMm) {
@@ -360,31 +330,34 @@ int runPlan(std::span<const std::string> words) {
   endProgressLine();
   t.curvature = msSince(start);
   start = Clock::now();
-  o.field.progress = consoleProgress("flow field");
-  const planning::LineField field = planning::flowField(part, curvature, o.field);
+  const double diagonal = boxDiagonal(part);
+  const planning::RegionPlan plan = regionPlanOf(o, diagonal);
+  const planning::RegionFields fields =
+      planning::regionFields(part, curvature, plan, {}, consoleProgress("flow field"));
   endProgressLine();
   t.field = msSince(start);
   start = Clock::now();
-  const double diagonal = boxDiagonal(part);
-  const LineSpacing spacing = chooseSpacing(part, curvature, field, o);
-  // A longer line winds round and round a closed part (no loop closes exactly on a free form).
+  const planning::LineSpacing spacing =
+      planning::regionSpacing(part, curvature, fields, plan, o.tool.tool);
+  planning::RegionLinesParams lineParams;
+  lineParams.seeding = o.seeding;
+  lineParams.tracing = o.method;
+  lineParams.smoothHalfWindow = o.smoothWindow;
+  lineParams.fair = o.fair;
+  lineParams.progress = consoleProgress("lines");
   std::vector<planning::Streamline> lines =
-      refineLines(part,
-                  planLines(part, field, o.seeding, o.method, spacing.minMm, 4.0 * diagonal,
-                            consoleProgress("lines"), spacing.separationAt),
-                  o);
+      planning::planRegionLines(part, fields, {}, spacing, lineParams);
   endProgressLine();
   t.lines = msSince(start);
-  if (lines.empty()) throw InvalidInput("plan: no line with two points could be traced");
   start = Clock::now();
   planning::LinkingParams linking;
-  linking.order = o.linking;
   // Concave areas barely wider than a ball allow huge spacings; links that long lift instead.
   const double linkSpacing =
       o.scallopMm ? std::min(spacing.maxMm, 2.0 * o.tool.tool.radiusMm) : spacing.maxMm;
   linking.directLinkMaxMm = 2.0 * linkSpacing;
   linking.clearanceMm = std::min(1.0, diagonal / 20.0);  // parts in metres are tiny in mm
-  const PlacedProgram program = placeAndLink(part, lines, o.tool, o.feedMmPerMin, linking);
+  const PlacedProgram program =
+      placeAndLink(part, lines, o.tool, o.feedMmPerMin, planning::linkingParamsOf(plan, linking));
   const planning::LinkedPaths& linked = program.linked;
   const io::ClProgram table =
       io::clProgramFromLinked(linked, program.path, o.tool.tool, o.point, program.normals);

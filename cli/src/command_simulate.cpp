@@ -14,6 +14,7 @@
 #include <ddfcam/planning/error_map.h>
 #include <ddfcam/planning/grinding_simulation.h>
 #include <ddfcam/planning/penetration_correction.h>
+#include <ddfcam/planning/pipeline/simulation_stage.h>
 #include <ddfcam/planning/preston_removal.h>
 #include <ddfcam/planning/workpiece.h>
 
@@ -38,6 +39,7 @@
 #include <fstream>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace ddfcam::cli {
 namespace {
@@ -332,9 +334,12 @@ void correct(const SimulateOptions& o, const ddf::DisplacementField& goal, CsvPa
   planning::PenetrationCorrectionParams params;
   params.gridSize = o.correction.grid;
   params.every = o.correction.every;
-  params.normals = path.normals;
+  params.normals = path.normals;  // the file's, turned towards the tool where they point away
   params.progress = consoleProgress("correcting");
-  r.correction = planning::correctPenetrations(goal, planning::toolMesh(o.tool), path.path, params);
+  planning::CorrectedPath corrected =
+      planning::correctPathPenetrations(goal, o.tool, std::move(path.path), params);
+  path.path = std::move(corrected.path);
+  r.correction = std::move(corrected.report);
   endProgressLine();
   r.correctSeconds = secondsSince(start);
 }
@@ -352,7 +357,10 @@ void cut(const SimulateOptions& o, const CsvPath& path, ddf::DisplacementField& 
     params.infeedMm = o.preston.infeedMm;
     params.normals = path.normals;
     params.progress = consoleProgress("preston");
-    r.preston = planning::applyPrestonRemoval(part, planning::toolMesh(o.tool), path.path, params);
+    planning::PrestonStageResult ground =
+        planning::prestonStage(std::move(part), o.tool, path.path, params);
+    part = std::move(ground.workpiece);
+    r.preston = std::move(ground.report);
     r.removedVolumeMm3 = r.preston->removedVolumeMm3;
   } else {
     planning::GrindingSimulationParams simulation;

@@ -8,7 +8,7 @@
 #include <ddfcam/planning/tool.h>
 #include <ddfcam/planning/workpiece.h>
 
-#include "job_stages.h"
+#include "job_inputs.h"
 
 #include <algorithm>
 #include <chrono>

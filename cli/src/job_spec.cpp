@@ -136,6 +136,16 @@ RegionJob parseRegion(const json& v, const std::string& path, const std::string&
   if (r.method == LineMethod::Even && r.tracing != planning::StreamlineMethod::Rk4)
     f.fail("tracing", "even spacing traces with rk4 only");
   r.plan.spacingMm = f.number("spacingMm", r.plan.spacingMm, 1e-3);
+  if (f.find("scallopMm")) {
+    r.plan.spacingMode = planning::SpacingMode::ScallopTolerance;
+    r.plan.scallopToleranceMm = f.number("scallopMm", r.plan.scallopToleranceMm, 1e-6);
+    if (r.method == LineMethod::Transverse)
+      f.fail("scallopMm",
+             "a spacing from the scallop height varies, so it needs \"lines\": "
+             "\"even\"");
+  }
+  r.plan.feedSign = f.integer("feedSign", r.plan.feedSign, -1, 1);
+  if (r.plan.feedSign == 0) f.fail("feedSign", "expected 1 (along the field) or -1 (against it)");
   r.plan.linking =
       static_cast<planning::LinkingOrder>(f.choice("linking", {"zigzag", "oneDirection"}, 0));
   r.link = f.flag("link", r.link);

@@ -30,9 +30,7 @@ Streamline reversedStreamline(Streamline line) {
 }
 
 LinkedPaths orderLinesForCutting(const ddf::DisplacementField& part, std::vector<Streamline>& lines,
-                                 LinkingOrder order) {
-  LinkingParams params;
-  params.order = order;
+                                 const LinkingParams& params) {
   LinkedPaths linked = linkStreamlines(part, lines, params);
   std::vector<Streamline> ordered;
   for (const PathMove& move : linked.moves)

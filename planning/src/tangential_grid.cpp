@@ -244,35 +244,4 @@ Eigen::AlignedBox3d partBox(const GridBox& g, const TangentFrame& frame, double 
 
 }  // namespace detail
 
-TangentialHeights tangentialHeights(const SurfacePatchIndex& index,
-                                    const ddf::TriangleMesh& toolMesh,
-                                    const Eigen::Isometry3d& pose, const TangentFrame& frame,
-                                    const TangentialGridParams& params) {
-  if (toolMesh.triangles.empty()) throw InvalidInput("tangentialHeights: the tool mesh is empty");
-  if (params.gridSize < 2) throw InvalidInput("tangentialHeights: gridSize must be at least 2");
-  std::vector<detail::Local> tool, pts;
-  detail::transformMesh(toolMesh, pose, frame, tool);
-  const detail::GridBox g = detail::footprintBox(tool, params.gridSize, params.marginMm);
-  TangentialHeights out;
-  out.frame = frame;
-  out.gridU = g.nu, out.gridV = g.nv, out.u0 = g.u0, out.v0 = g.v0, out.du = g.du, out.dv = g.dv;
-  out.wTop = g.wTop;
-  out.tool.assign(g.cells(), detail::kInf);
-  out.workpiece.assign(g.cells(), -detail::kInf);
-  detail::rasterizeMin(toolMesh, tool, g, out.tool);
-  double wMin = g.wTop;
-  for (const detail::Local& p : tool) wMin = std::min(wMin, p.w);
-  // As deep below the tool as the tool is tall: the box of fig. 8.20a.
-  const double wLow = wMin - (g.wTop - wMin);
-  std::vector<int> faces;
-  index.query(detail::partBox(g, frame, wLow), faces);
-  for (int f : faces) {
-    detail::faceLocalPoints(index.field(), f, frame, pts);
-    detail::rasterizeFace(index.field(), pts, g, [&](int cell, double w) {
-      if (w <= g.wTop && w >= wLow) out.workpiece[cell] = std::max(out.workpiece[cell], float(w));
-    });
-  }
-  return out;
-}
-
 }  // namespace ddfcam::planning

@@ -297,6 +297,19 @@ TEST(CliPlan, ScallopNeedsABall) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+// A scallop height whose formula asks for less than the smallest spacing a grinding path can
+// hold (2 sqrt(2 R h) = 0.02 mm here) gets that floor, as in the workbench and batch jobs.
+TEST(CliPlan, ScallopSpacingHasTheWorkbenchFloor) {
+  test::ScratchDir dir;
+  writeDdf(ddf::planePatch({.size = {4.0, 3.0}, .cellsX = 4, .cellsY = 3, .m = 9}).ddf,
+           dir / "plane.ddf");
+  const PlanRun run = plan(dir, {(dir / "plane.ddf").string(), "-o", (dir / "p.csv").string(),
+                                 "--field", "fixed", "--no-smooth", "--scallop", "0.00001",
+                                 "--tool", "ball", "--radius", "5", "--seeding", "even"});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("spacing 0.05 to 0.05 mm")) << run.out;
+}
+
 /// Plans on a shared mesh and checks that every contact lies on the mesh (the converted part's
 /// surface is the mesh itself: heights 0 on a support that is the mesh).
 void planOnSharedMesh(const std::string& name, const std::vector<std::string>& options) {

@@ -222,6 +222,45 @@ TEST(CliRun, TransverseFamilyWithALibraryTool) {
   EXPECT_EQ(project.regions[0].plan.tool, 1);
 }
 
+// A job's scallop height sets the spacing by the formula for a ball on a plane, and its feed
+// sign the cutting direction: with one-direction linking every pass runs against +x.
+TEST(CliRun, ScallopHeightAndFeedSignReachThePath) {
+  test::ScratchDir dir;
+  std::filesystem::create_directories(dir.path());
+  writeDdf(ddf::planePatch({}).ddf, dir / "plane.ddf");  // 40 x 30 mm
+  writeText(dir / "job.json", R"({
+  "part": "plane.ddf",
+  "tools": [{"name": "ball", "kind": "sphere", "radiusMm": 5}],
+  "regions": [{"field": "fixed", "direction": [1, 0, 0], "smooth": false,
+               "scallopMm": 0.05, "feedSign": -1, "linking": "oneDirection"}]
+})");
+  const RunResult run = cli(dir, {"run", (dir / "job.json").string()});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const planning::Project project = readProject(dir / "job.ddfproj");
+  ASSERT_EQ(project.paths.size(), 1u);
+  EXPECT_EQ(project.regions[0].plan.spacingMode, planning::SpacingMode::ScallopTolerance);
+  const planning::ToolPath& path = project.paths[0];
+  const double spacing = 2.0 * std::sqrt(2.0 * 5.0 * 0.05 - 0.05 * 0.05);
+  const double passes = static_cast<double>(path.passStarts.size());
+  EXPECT_NEAR(passes, 30.0 / spacing, 2.5) << "spacing " << spacing << " mm";
+  for (std::size_t s = 0; s < path.passStarts.size(); ++s) {
+    const std::size_t end =
+        s + 1 < path.passStarts.size() ? path.passStarts[s + 1] - 1 : path.poses.size() - 1;
+    EXPECT_LT(path.poses[end].contact.x(), path.poses[path.passStarts[s]].contact.x() - 10.0)
+        << "pass " << s;
+  }
+}
+
+TEST(CliRun, ScallopHeightNeedsEvenLines) {
+  test::ScratchDir dir;
+  writeCoarseDemoPart(dir / "part.ddf");
+  writeText(dir / "job.json", R"({"part": "part.ddf",
+  "regions": [{"lines": "transverse", "scallopMm": 0.05}]})");
+  const RunResult run = cli(dir, {"run", (dir / "job.json").string()});
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_THAT(run.err, HasSubstr("scallopMm"));
+}
+
 /// Plane z = 0.25 over x in [0, 2] (feed), y in [0, 20] (cross-feed): the part of the iso-scallop
 /// oracle of tests/planning/spacing_refinement_test.cpp.
 ddf::GeneratedSurface refinementPlane() {

@@ -67,7 +67,8 @@ TEST(LineOrdering, ZigZagOrdersAcrossTheFamilyAndAlternatesDirections) {
   const ddf::SurfaceLocator locator(plane.ddf);
   std::vector<Streamline> lines;
   for (double y : {20.0, 5.0, 15.0, 10.0}) lines.push_back(lineOnPlane(locator, 5.0, 35.0, y));
-  const LinkedPaths linked = orderLinesForCutting(plane.ddf, lines, LinkingOrder::ZigZag);
+  const LinkedPaths linked =
+      orderLinesForCutting(plane.ddf, lines, {.order = LinkingOrder::ZigZag});
   ASSERT_EQ(lines.size(), 4u);
   EXPECT_EQ(linked.pathCount, 4);
   double lastY = lines[0].points.front().point.y();

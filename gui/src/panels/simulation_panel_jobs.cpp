@@ -12,9 +12,7 @@
 #include <ddfcam/io/mesh_io.h>
 #include <ddfcam/planning/coverage.h>
 #include <ddfcam/planning/grinding_simulation.h>
-#include <ddfcam/planning/penetration_correction.h>
-#include <ddfcam/planning/preston_removal.h>
-#include <ddfcam/planning/tangential_grid.h>
+#include <ddfcam/planning/pipeline/simulation_stage.h>
 #include <ddfcam/planning/workpiece.h>
 
 #include <QElapsedTimer>
@@ -26,6 +24,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <utility>
 
 namespace ddfcam::gui {
 
@@ -107,25 +106,6 @@ QString prestonText(const planning::ToolPath& path, const planning::PrestonRepor
       .arg(seconds, 0, 'f', 2);
 }
 
-/// Contact normals of the goal's raster surface, turned towards the tool at each pose (the
-/// centroid of the cutting mesh) so a part machined from the side its vectors point away from
-/// (e.g. a bore) is corrected the right way.
-std::vector<ddf::Vec3> normalsTowardsTool(const ddf::DisplacementField& goal,
-                                          const ddf::TriangleMesh& toolMesh,
-                                          const planning::ToolPath& path) {
-  ddf::Vec3 centroid = ddf::Vec3::Zero();
-  for (const ddf::Vec3& v : toolMesh.vertices) centroid += v;
-  centroid /= static_cast<double>(std::max<std::size_t>(1, toolMesh.vertices.size()));
-  const planning::SurfacePatchIndex index(goal);
-  std::vector<ddf::Vec3> normals;
-  normals.reserve(path.poses.size());
-  for (const planning::PathPose& pp : path.poses) {
-    const ddf::Vec3 n = index.normalAt(pp.contact);
-    normals.push_back(n.dot(pp.pose * centroid - pp.contact) < 0.0 ? ddf::Vec3(-n) : n);
-  }
-  return normals;
-}
-
 }  // namespace
 
 bool SimulationPanel::startJob(const QString& title, JobWork work) {
@@ -168,8 +148,9 @@ bool SimulationPanel::simulatePath(int index) {
         clock.start();
         planning::PrestonParams pp = prestonParams;
         pp.progress = progress;
-        const auto r = planning::applyPrestonRemoval(*part, planning::toolMesh(tool), path, pp);
-        text = prestonText(path, r, clock.elapsed() / 1000.0);
+        planning::PrestonStageResult r = planning::prestonStage(std::move(*part), tool, path, pp);
+        *part = std::move(r.workpiece);
+        text = prestonText(path, r.report, clock.elapsed() / 1000.0);
       } else {
         const auto r =
             planning::simulateGrinding(*part, planning::toolMeshes(tool), path, grinding, progress);
@@ -276,23 +257,21 @@ bool SimulationPanel::correctPenetrations(int index, int gridSize, int every) {
     const planning::Tool tool = p.tools[static_cast<std::size_t>(path.tool)];
     const QString title = tr("Correct penetrations of '%1'").arg(QString::fromStdString(path.name));
     started = startJob(title, [=, this](const ProgressCallback& progress) {
-      const ddf::TriangleMesh mesh = planning::toolMesh(tool);
       planning::PenetrationCorrectionParams params;
       params.gridSize = gridSize;
       params.every = every;
       params.progress = progress;
-      params.normals = normalsTowardsTool(*part, mesh, path);
-      planning::ToolPath corrected = path;
-      QElapsedTimer clock;  // the correction alone, as the performance target counts it
+      QElapsedTimer clock;
       clock.start();
-      const auto r = planning::correctPenetrations(*part, mesh, corrected, params);
+      planning::CorrectedPath result = planning::correctPathPenetrations(*part, tool, path, params);
       const double ms = clock.nsecsElapsed() / 1e6;
+      const planning::PenetrationCorrectionReport& r = result.report;
       const auto lifted = std::ranges::count_if(r.liftMm, [](double l) { return l > 0.0; });
       const QString text = tr("%1 poses lifted, max lift %2 mm, %3 ms")
                                .arg(lifted)
                                .arg(r.maxLiftMm, 0, 'f', 4)
                                .arg(ms, 0, 'f', 1);
-      return std::function<void()>([this, index, corrected, title, text] {
+      return std::function<void()>([this, index, corrected = std::move(result.path), title, text] {
         workbench().document.push(
             std::make_unique<ReplacePathCommand>(workbench().document, index, corrected, title));
         report(text, correctionLabel_);

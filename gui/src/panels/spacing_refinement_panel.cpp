@@ -2,7 +2,7 @@
 // ddfcam gui: SpacingRefinementPanel: inputs, the refinement job, apply.
 #include <ddfcam/gui/panels/spacing_refinement_panel.h>
 
-#include "streamlines_fields.h"
+#include <ddfcam/gui/panels/streamlines_panel.h>
 
 #include <ddfcam/error.h>
 #include <ddfcam/gui/composite_command.h>
@@ -143,8 +143,9 @@ bool SpacingRefinementPanel::refine() {
     auto part = std::make_shared<const ddf::DisplacementField>(*p.part);
     const planning::CurvatureParams curvatureParams = planning::partCurvatureParams(p);
     FieldChoice choice;
-    choice.source = static_cast<Source>(source_->currentData().toInt());
-    if (region >= 0) choice.faceMask = regionFaceMask(*part, p.regions[region]);
+    choice.plan.flowSource = static_cast<Source>(source_->currentData().toInt());
+    choice.plan.smoothField = false;
+    if (region >= 0) choice.faceMask = planning::regionFaceMask(*part, p.regions[region]);
     const planning::Tool tool = p.tools[static_cast<std::size_t>(toolIndex)];
     planning::SpacingRefinementParams params;
     params.toleranceMm = tolerance_->value();

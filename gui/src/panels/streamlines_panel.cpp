@@ -2,8 +2,6 @@
 // ddfcam gui: StreamlinesPanel, its widgets and settings (actions: streamlines_panel_actions.cpp).
 #include <ddfcam/gui/panels/streamlines_panel.h>
 
-#include "streamlines_fields.h"
-
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/flow_field_display.h>
 #include <ddfcam/gui/job_runner.h>
@@ -274,18 +272,19 @@ FieldChoice StreamlinesPanel::currentChoice() const {
   FieldChoice choice;
   using Source = planning::FlowFieldSource;
   const int item = direction_->currentIndex();
-  choice.source = item == AlongMax       ? Source::MaxCurvatureDirection
-                  : item == AlongMin     ? Source::MinCurvatureDirection
-                  : item == DrawnStrokes ? Source::UserStrokes
-                                         : Source::FixedDirection;
-  if (item >= FixedX && item <= FixedZ) choice.fixedDirection = ddf::Vec3::Unit(item - FixedX);
-  if (item == DrawnStrokes) choice.strokes = strokes();
-  choice.smoothing = smooth_->isChecked();
-  choice.smoothnessWeight = weight_->value();
+  planning::RegionPlan& plan = choice.plan;
+  plan.flowSource = item == AlongMax       ? Source::MaxCurvatureDirection
+                    : item == AlongMin     ? Source::MinCurvatureDirection
+                    : item == DrawnStrokes ? Source::UserStrokes
+                                           : Source::FixedDirection;
+  if (item >= FixedX && item <= FixedZ) plan.fixedDirection = ddf::Vec3::Unit(item - FixedX);
+  if (item == DrawnStrokes) plan.strokes = strokes();
+  plan.smoothField = smooth_->isChecked();
+  plan.smoothnessWeight = weight_->value();
   const int region = region_->currentData().isValid() ? region_->currentData().toInt() : -1;
   const planning::Project& project = workbench().document.project();
   if (region >= 0 && region < static_cast<int>(project.regions.size()) && project.part)
-    choice.faceMask = regionFaceMask(*project.part, project.regions[region]);
+    choice.faceMask = planning::regionFaceMask(*project.part, project.regions[region]);
   return choice;
 }
 

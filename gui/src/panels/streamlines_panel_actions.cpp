@@ -2,8 +2,6 @@
 // ddfcam gui: StreamlinesPanel actions: field jobs, seeding, smoothing preview and apply.
 #include <ddfcam/gui/panels/streamlines_panel.h>
 
-#include "streamlines_fields.h"
-
 #include <ddfcam/error.h>
 #include <ddfcam/gui/adapters/poly_data.h>
 #include <ddfcam/gui/document.h>
@@ -32,6 +30,25 @@
 #include <optional>
 
 namespace ddfcam::gui {
+
+std::shared_ptr<StreamlinesPanel::Fields> computeStreamlineFields(
+    const ddf::DisplacementField& part, const FieldChoice& choice,
+    std::shared_ptr<const planning::CurvatureField> curvature,
+    const planning::CurvatureParams& curvatureParams, const ProgressCallback& progress) {
+  auto fields = std::make_shared<StreamlinesPanel::Fields>();
+  fields->choice = choice;
+  if (!curvature) {
+    planning::CurvatureParams params = curvatureParams;
+    params.progress = [&](double f) { return !progress || progress(0.2 * f); };
+    curvature =
+        std::make_shared<const planning::CurvatureField>(planning::computeCurvature(part, params));
+  }
+  fields->curvature = curvature;
+  static_cast<planning::RegionFields&>(*fields) =
+      planning::regionFields(part, *curvature, choice.plan, choice.faceMask,
+                             [&](double f) { return !progress || progress(0.2 + 0.8 * f); });
+  return fields;
+}
 
 bool StreamlinesPanel::runWithFields(const QString& title, LineWork work, const QString& pathName,
                                      std::shared_ptr<const QString> note) {
@@ -103,37 +120,34 @@ void StreamlinesPanel::addPath(std::vector<planning::Streamline> lines, const QS
     const planning::Project& p = document.project();
     for (planning::Streamline& line : lines) planning::dropRepeatedPoints(line);
     std::erase_if(lines, [](const planning::Streamline& l) { return l.points.size() < 2; });
-    const planning::RegionPlan* plan = selectedPlan();
-    QString idle;
-    std::optional<double> linkedIdle;
-    if (link_->isChecked() && lines.size() > 1) {
-      const auto order = plan ? plan->linking : planning::LinkingOrder::ZigZag;
-      const planning::LinkedPaths linked = planning::orderLinesForCutting(*p.part, lines, order);
-      idle = tr(", linked: idle %1 mm").arg(linked.idleLengthMm, 0, 'f', 1);
-      linkedIdle = linked.idleLengthMm;
-    }
+    const planning::RegionPlan* selected = selectedPlan();
+    const planning::RegionPlan plan = selected ? *selected : planning::RegionPlan{};
     // The region's tool if its plan names one, else the project's first (or a new default).
     const int toolIndex =
-        plan && plan->tool >= 0 && plan->tool < static_cast<int>(p.tools.size()) ? plan->tool : 0;
+        plan.tool >= 0 && plan.tool < static_cast<int>(p.tools.size()) ? plan.tool : 0;
     const bool needTool = p.tools.empty();
     const planning::Tool tool = needTool ? planning::Tool{} : p.tools[toolIndex];
-    planning::StreamlinePathParams params;
+    planning::StreamlinePathParams params = placementParams();
     params.name = QString("%1 %2").arg(name).arg(p.paths.size() + 1).toStdString();
-    planning::ToolPath path = placeLines(*p.part, lines, tool, toolIndex, params);
-    double length = 0;
-    for (const auto& line : lines) length += line.lengthMm;
-    rawLines_[params.name] = lines;
-    if (linkedIdle)
-      linkedIdle_[params.name] = *linkedIdle;
+    planning::RegionPath placed = planning::regionToolPath(*p.part, std::move(lines), plan, tool,
+                                                           toolIndex, link_->isChecked(), params);
+    lastSampling_ = std::move(placed.placed.passes);
+    showSampling();
+    const QString idle =
+        placed.linked ? tr(", linked: idle %1 mm").arg(placed.linked->idleLengthMm, 0, 'f', 1)
+                      : QString();
+    rawLines_[params.name] = placed.lines;
+    if (placed.linked)
+      linkedIdle_[params.name] = placed.linked->idleLengthMm;
     else
       linkedIdle_.erase(params.name);
     pathList_->setLinkedIdle(linkedIdle_);
-    document.push(std::make_unique<AddPathCommand>(document, std::move(path),
+    document.push(std::make_unique<AddPathCommand>(document, std::move(placed.placed.path),
                                                    needTool ? std::optional(tool) : std::nullopt));
     status_->setText(tr("%1: %2 lines, cutting %3 mm%4")
                          .arg(QString::fromStdString(params.name))
-                         .arg(lines.size())
-                         .arg(length, 0, 'f', 1)
+                         .arg(placed.lines.size())
+                         .arg(placed.cuttingLengthMm, 0, 'f', 1)
                          .arg(idle));
   });
 }
@@ -216,7 +230,7 @@ bool StreamlinesPanel::applySmoothing() {
   }
   const std::size_t before = workbench().document.project().paths.size();
   const auto revision = workbench().document.revision();
-  replaceSelected(smoothStreamlines(*workbench().document.project().part, *raw, k),
+  replaceSelected(planning::smoothOnSurface(*workbench().document.project().part, *raw, k),
                   tr("Smooth path"));
   return workbench().document.revision() != revision &&
          workbench().document.project().paths.size() == before;

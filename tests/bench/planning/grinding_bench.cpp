@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // ddfcam-bench: grinding with placement and correction (fig. 8.14, 8.16), the turbine blade,
-// and the OpenVDB level-set peer measured in the same run (issue 5 part 6).
+// and the OpenVDB level-set peer measured in the same run.
 #include "ddf/grinding_workloads.h"
 #include "planning/blade_workload.h"
 

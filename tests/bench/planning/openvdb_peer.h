@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// ddfcam-bench: the OpenVDB level-set peer of the grinding benchmarks (issue 5 part 6).
+// ddfcam-bench: the OpenVDB level-set peer of the grinding benchmarks.
 #pragma once
 
 #include <ddfcam/ddf/triangle_mesh.h>

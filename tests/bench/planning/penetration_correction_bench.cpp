@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Benchmark: penetration correction of a grinding roll moved around a torus (sec. 8.4.2,
 // fig. 8.19-8.21): 400 poses, 50x50 tangential grids, every 1st / 25th / 50th pose exact
-// (dissertation: 9.8 s / 0.6 s; issue 5 goal: <= 20 ms for all 400), and a naive per-cell
+// (dissertation: 9.8 s / 0.6 s; goal: <= 20 ms for all 400), and a naive per-cell
 // ray / triangle reference for the speed ratio.
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/planning/penetration_correction.h>

@@ -15,10 +15,10 @@ class Crc32 {
   /// @brief Feeds @p bytes into the checksum.
   void update(std::span<const std::byte> bytes);
   /// @brief Checksum of everything fed so far.
-  std::uint32_t value() const { return ~state_; }
+  std::uint32_t value() const { return state_; }
 
  private:
-  std::uint32_t state_ = 0xFFFFFFFFu;
+  std::uint32_t state_ = 0;  // zlib's running value: the checksum of no bytes
 };
 
 /// @brief CRC-32 of @p bytes in one call.

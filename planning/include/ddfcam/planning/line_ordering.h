@@ -19,12 +19,12 @@ void dropRepeatedPoints(Streamline& line);
 /// mirrored.
 Streamline reversedStreamline(Streamline line);
 
-/// @brief Links @p lines with linkStreamlines() (order @p order, other LinkingParams at their
-/// defaults) and replaces them by the cut moves' lines in machining order, each reversed where
+/// @brief Links @p lines with linkStreamlines() (@p params: order, feed sign, link limits) and
+/// replaces them by the cut moves' lines in machining order, each reversed where
 /// its cut runs against the trace; lines with fewer than two points drop out.
 /// @return the linking report (moves index the lines as they were passed in).
 /// @throws InvalidInput as linkStreamlines().
 LinkedPaths orderLinesForCutting(const ddf::DisplacementField& part, std::vector<Streamline>& lines,
-                                 LinkingOrder order);
+                                 const LinkingParams& params);
 
 }  // namespace ddfcam::planning

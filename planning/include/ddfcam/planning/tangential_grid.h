@@ -39,26 +39,6 @@ struct TangentFrame {
 TangentFrame tangentFrame(const ddf::Vec3& contact, const ddf::Vec3& normal,
                           const ddf::Vec3& hint = ddf::Vec3::UnitX());
 
-/// @brief A tangential DDF of fig. 8.18: a gridU x gridV lattice of rays along the frame normal
-/// through the cell centres (u0 + (a + 1/2) du, v0 + (b + 1/2) dv), and per ray the height w
-/// (mm, along the normal) of the workpiece surface (the highest crossing; -inf = the ray misses
-/// the surface inside the box) and of the tool (the lowest crossing; +inf = misses the tool).
-/// Cell (a, b) is entry a + b gridU.
-struct TangentialHeights {
-  TangentFrame frame;  ///< frame of the grid
-  int gridU = 0;       ///< cells along u
-  int gridV = 0;       ///< cells along v
-  double u0 = 0.0;     ///< lower u edge of the box, mm
-  double v0 = 0.0;     ///< lower v edge of the box, mm
-  double du = 0.0;     ///< cell size along u, mm
-  double dv = 0.0;     ///< cell size along v, mm
-  double wTop = 0.0;   ///< top of the box (the tool's highest w plus margin), mm
-  /// gridU gridV workpiece heights h_W, mm; -infinity where the surface is not hit in the box.
-  std::vector<float> workpiece;
-  /// gridU gridV tool heights h_T, mm; +infinity where the tool does not cover the ray.
-  std::vector<float> tool;
-};
-
 /// @brief Spatial index of a DDF's raster surface (the raster triangles of fig. 7.1a) for
 /// repeated local queries: a uniform grid over conservative per-face bounds (the hull of
 /// p_a + h v_a for the face's smallest and largest height), built once in O(#heights).
@@ -98,22 +78,5 @@ class SurfacePatchIndex {
   std::vector<int> cellStart_;  // CSR: faces of cell c are cellFaces_[cellStart_[c] ..)
   std::vector<int> cellFaces_;
 };
-
-/// @brief Parameters of tangentialHeights().
-struct TangentialGridParams {
-  int gridSize = 50;      ///< cells along each of u and v (default 50)
-  double marginMm = 0.0;  ///< added around the tool's footprint box on every side, mm (default 0)
-};
-
-/// @brief The tangential DDF of the tool @p toolMesh (tool frame, mm) at @p pose (tool ->
-/// part frame) over the workpiece indexed by @p index, in @p frame: the box is the tool's
-/// bounding box in the frame plus the margin; h_T by z-buffer rasterization of the tool
-/// triangles (minimum per cell centre), h_W by rasterization of the raster triangles of the
-/// faces in the box (maximum per cell centre, crossings above wTop ignored).
-/// @throws InvalidInput for an empty tool mesh or gridSize < 2.
-TangentialHeights tangentialHeights(const SurfacePatchIndex& index,
-                                    const ddf::TriangleMesh& toolMesh,
-                                    const Eigen::Isometry3d& pose, const TangentFrame& frame,
-                                    const TangentialGridParams& params = {});
 
 }  // namespace ddfcam::planning

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // ddfcam gui: the Error map panel: deviation of the simulated from the desired surface with a
 // tolerance band, its statistics and histogram, the deviation along a path, and the scallop
-// table (issue 5 part 4).
+// table.
 #pragma once
 
 #include <ddfcam/gui/workbench.h>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // ddfcam gui: the "Mould tools" panel: springback compensation by displacement adjustment on
-// the study's mould DDF (dissertation ch. 9, issue 7), with its history and convergence plot.
+// the study's mould DDF (dissertation ch. 9), with its history and convergence plot.
 #pragma once
 
 #include <ddfcam/ddf/displacement_field.h>

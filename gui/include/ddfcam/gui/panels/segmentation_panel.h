@@ -32,7 +32,7 @@ enum class SegmentationMethod {
   CadFace,  ///< one region per CAD face of a CAD part (planning::segmentByCadFace, minFaces 1)
 };
 
-/// @brief Segments the part into regions (issue 4, sec. 8.1) and edits them: automatic
+/// @brief Segments the part into regions (sec. 8.1) and edits them: automatic
 /// segmentation as a job (curvature, then segmentation by curvature type or tool-radius
 /// classes with a minimum region size; or, for a part imported from CAD, one region per CAD
 /// face); a region list (name, face count, colour) with rename,

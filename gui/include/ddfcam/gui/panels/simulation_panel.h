@@ -19,8 +19,8 @@ class SimulationPlayback;
 /// @brief Lists tools, paths and simulation states. Selecting a path shows its tool at the
 /// first pose (cutting and non-cutting parts); the playback controls play the selected path
 /// pose by pose (SimulationPlayback); "Simulate" grinds the selected path into a copy of the part
-/// as a job with the SimulationOptions (planning::simulateGrinding, or applyPrestonRemoval for
-/// the Preston model), prints the report to the console and the "simulationReport" label, and
+/// as a job with the SimulationOptions (planning::simulateGrinding, or planning::prestonStage
+/// for the Preston model), prints the report to the console and the "simulationReport" label, and
 /// commits the new heights as one undoable edit that also records a simulation state;
 /// "Restore" sets the heights of a recorded state (undoable). Workpiece set-up ("allowanceSpin",
 /// "raiseAllowanceButton", "stockMeshButton", "workpieceLabel") and penetration correction
@@ -51,7 +51,7 @@ class SimulationPanel : public Panel {
   /// are counted in the console and "workpieceLabel") as a job. @return true if started.
   bool stockFromMesh(const QString& path);
   /// @brief Lifts the poses of path @p index off the part's current surface
-  /// (planning::correctPenetrations with @p gridSize and @p every) as a job, committed as one
+  /// (planning::correctPathPenetrations with @p gridSize and @p every) as a job, committed as one
   /// ReplacePathCommand; "correctionLabel" shows the lifts. @return true if started.
   bool correctPenetrations(int index, int gridSize = 50, int every = 1);
   /// @brief Mode, checks and removal model used by Simulate and the playback.

@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: MIT
-// ddfcam gui: the Spacing panel: path spacing from simulated error maps (sec. 8.4.1, issue 5
-// part 5).
+// ddfcam gui: the Spacing panel: path spacing from simulated error maps (sec. 8.4.1).
 #pragma once
 
 #include <ddfcam/gui/workbench.h>

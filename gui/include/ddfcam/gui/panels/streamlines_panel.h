@@ -7,6 +7,7 @@
 #include <ddfcam/planning/flow_field.h>
 #include <ddfcam/planning/line_field.h>
 #include <ddfcam/planning/path_sampling.h>
+#include <ddfcam/planning/pipeline/region_planning.h>
 #include <ddfcam/planning/region_plan.h>
 #include <ddfcam/planning/streamline.h>
 #include <ddfcam/planning/streamline_path.h>
@@ -34,10 +35,18 @@ namespace ddfcam::gui {
 
 class FlowFieldDisplay;
 class PathListWidget;
-struct FieldChoice;
 struct PickResult;
 
-/// @brief Plans tool paths along the tool flow field (sec. 8.1/8.3, issue 4). The field
+/// @brief What the flow field depends on besides the part's heights: the field choices of a
+/// region plan (its other members at their defaults) and the region's faces.
+struct FieldChoice {
+  planning::RegionPlan plan;           ///< flow source, fixed direction, strokes, smoothing
+  std::vector<std::uint8_t> faceMask;  ///< faces of the region; empty: whole part
+
+  bool operator==(const FieldChoice&) const = default;
+};
+
+/// @brief Plans tool paths along the tool flow field (sec. 8.1/8.3). The field
 /// (planning::flowField) follows k_max, k_min, a fixed direction projected onto the surface or
 /// strokes the user draws on the part ("Draw direction"), optionally smoothed with Ceres, on
 /// the whole part or on one region (its faces bound the field and the lines, its plan gives
@@ -128,9 +137,9 @@ class StreamlinesPanel : public Panel {
   /// planning::evenlySpacedStreamlines, Jobard-Lefer). For a region whose plan is in
   /// ScallopTolerance mode and whose tool is a ball, the separation follows the scallop-height
   /// formula at the local cross-feed curvature (planning::scallopSpacingField with
-  /// RegionPlan::scallopToleranceMm, at least 0.05 mm; @p dSepMm only where no value exists);
-  /// with a straight roll the plan's fixed spacing is used and the status label says why. @return
-  /// true if the job started.
+  /// RegionPlan::scallopToleranceMm, at least planning::kMinScallopSpacingMm);
+  /// with a straight roll the plan's fixed spacing is used and the status label says why
+  /// (planning::regionSpacing). @return true if the job started.
   bool coverRegion(double dSepMm);
 
   /// @brief Sets the moving-average half window k of the slider (0: off); updates the preview.
@@ -237,5 +246,19 @@ class StreamlinesPanel : public Panel {
   /// Idle length of the linking of the paths this panel linked, by path name, mm.
   std::map<std::string, double> linkedIdle_;
 };
+
+/// The line fields the paths follow, for one state of the part's heights.
+struct StreamlinesPanel::Fields : planning::RegionFields {
+  FieldChoice choice;
+  std::shared_ptr<const planning::CurvatureField> curvature;
+};
+
+/// @brief Curvature (reused if @p curvature is given, else computed with @p curvatureParams,
+/// e.g. planning::partCurvatureParams of the project) and the region's fields
+/// (planning::regionFields). Progress runs over [0, 1]; false cancels.
+std::shared_ptr<StreamlinesPanel::Fields> computeStreamlineFields(
+    const ddf::DisplacementField& part, const FieldChoice& choice,
+    std::shared_ptr<const planning::CurvatureField> curvature,
+    const planning::CurvatureParams& curvatureParams, const ProgressCallback& progress);
 
 }  // namespace ddfcam::gui

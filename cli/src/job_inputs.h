@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// ddfcam-cli run: the single stages of a batch job, each a call of the library functions the
-// workbench panels use.
+// ddfcam-cli run: a job's part, segmentation and region entries turned into library calls
+// (the planning pipeline the workbench panels call too).
 #pragma once
 
 #include <ddfcam/planning/curvature.h>
@@ -29,9 +29,10 @@ std::vector<planning::Region> segmentJobPart(const ddf::DisplacementField& part,
 std::vector<int> selectRegions(const std::vector<planning::Region>& regions, const RegionJob& job,
                                const std::string& what);
 
-/// @brief Plans region @p region of @p project as the Streamlines panel does (flow field of
-/// the region's plan masked to its faces, lines, drop of repeated points, linking, placement)
-/// or as the Spacing refinement panel does (LineMethod::Refined), and appends the path (and for
+/// @brief Plans region @p region of @p project with the planning pipeline
+/// (planning/pipeline/region_planning.h: the region's fields, spacing, lines, linking and
+/// placement, as the Streamlines panel does) or with planning::refineSpacing
+/// (LineMethod::Refined, as the Spacing refinement panel does), and appends the path (and for
 /// Refined the "refinement error" field) to the project.
 /// @throws InvalidInput when no line can be traced; Error from the planning functions.
 RegionPathInfo planRegion(planning::Project& project, const planning::CurvatureField& curvature,
