@@ -16,6 +16,8 @@
 #include <map>
 #include <numbers>
 
+#include "../../support/removed_cross_section.h"
+
 namespace ddfcam::planning {
 namespace {
 
@@ -137,23 +139,8 @@ TEST(SimulationStage, CorrectionWithNormalsAwayFromTheToolMatchesNoneAndEndsTheP
   }
 }
 
-/// Removed cross-section at x = 20 (a support edge line) by the trapezoid rule over the raster
-/// points there, from the plane height minus the represented height, mm^2.
 double crossSectionAtMid(const ddf::DisplacementField& field) {
-  std::map<long, double> depthAtY;  // key: y in 1e-6 mm
-  for (int f = 0; f < field.faceCount(); ++f)
-    for (int k = 0; k < field.resolution(); ++k)
-      for (int i = 0; i + k < field.resolution(); ++i) {
-        const ddf::Vec3 q = field.surfacePoint(f, i, k);
-        if (std::abs(q.x() - 20.0) > 1e-9) continue;
-        depthAtY[std::lround(q.y() * 1e6)] = kPlaneZ - q.z();
-      }
-  double area = 0.0;
-  for (auto it = depthAtY.begin(); std::next(it) != depthAtY.end(); ++it) {
-    const auto next = std::next(it);
-    area += 0.5 * (it->second + next->second) * (next->first - it->first) * 1e-6;
-  }
-  return area;
+  return test::removedCrossSection(field, 20.0, kPlaneZ);
 }
 
 TEST(SimulationStage, PrestonWithNormalsAwayFromTheToolMatchesNoneAndThePrestonFormula) {
