@@ -2,10 +2,10 @@
 // ddfcam-cli compare: deviation of a formed surface from its mould on the mould's DDF
 // (dissertation ch. 9): statistics, staged sequence, deviation map and vectors.
 #include <ddfcam/error.h>
-#include <ddfcam/io/deviation_export.h>
-#include <ddfcam/planning/error_map.h>
-#include <ddfcam/planning/surface_alignment.h>
-#include <ddfcam/planning/surface_comparison.h>
+#include <ddfcam/io/results/deviation_export.h>
+#include <ddfcam/planning/inspection/error_map.h>
+#include <ddfcam/planning/inspection/surface_comparison.h>
+#include <ddfcam/planning/mould/surface_alignment.h>
 
 #include "arguments.h"
 #include "commands.h"

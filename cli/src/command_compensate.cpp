@@ -3,8 +3,8 @@
 // mould_{j+1} = mould_j - lambda (formed_j - target), from imported formings or a linear model.
 #include <ddfcam/ddf/mesh_conversion.h>
 #include <ddfcam/error.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/planning/springback_compensation.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/planning/mould/springback_compensation.h>
 
 #include "arguments.h"
 #include "commands.h"

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // ddfcam-cli convert: a mesh or CAD file converted into a .ddf file.
 #include <ddfcam/ddf/conversion_report.h>
-#include <ddfcam/io/ddf_file.h>
-#include <ddfcam/io/part_loader.h>
+#include <ddfcam/io/mesh/ddf_file.h>
+#include <ddfcam/io/mesh/part_loader.h>
 
 #include "arguments.h"
 #include "commands.h"

@@ -3,10 +3,10 @@
 #include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/ddf/surface_sampling.h>
 #include <ddfcam/error.h>
-#include <ddfcam/io/part_loader.h>
-#include <ddfcam/io/vtp_writer.h>
-#include <ddfcam/planning/curvature.h>
-#include <ddfcam/planning/segmentation.h>
+#include <ddfcam/io/mesh/part_loader.h>
+#include <ddfcam/io/results/vtp_writer.h>
+#include <ddfcam/planning/analysis/curvature.h>
+#include <ddfcam/planning/analysis/segmentation.h>
 
 #include "arguments.h"
 #include "commands.h"

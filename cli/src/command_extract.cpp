@@ -2,8 +2,8 @@
 // ddfcam-cli extract: the surface represented by a .ddf file as a triangle mesh file.
 #include <ddfcam/ddf/adaptive_triangulation.h>
 #include <ddfcam/ddf/raster_mesh.h>
-#include <ddfcam/io/ddf_file.h>
-#include <ddfcam/io/mesh_io.h>
+#include <ddfcam/io/mesh/ddf_file.h>
+#include <ddfcam/io/mesh/mesh_io.h>
 
 #include "arguments.h"
 #include "commands.h"

@@ -2,8 +2,8 @@
 // ddfcam-cli info: sizes, raster spacing, crust reach, source unit, CAD faces, height range,
 // bounds and the constraint check of a .ddf file, or of a mesh or CAD file as converted.
 #include <ddfcam/ddf/validation.h>
-#include <ddfcam/io/ddf_file.h>
-#include <ddfcam/io/part_loader.h>
+#include <ddfcam/io/mesh/ddf_file.h>
+#include <ddfcam/io/mesh/part_loader.h>
 
 #include "arguments.h"
 #include "commands.h"

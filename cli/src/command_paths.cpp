@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // ddfcam-cli paths: converts a tool-path file between formats (CSV, APT/CLDATA, G-code).
 #include <ddfcam/error.h>
-#include <ddfcam/io/apt_writer.h>
-#include <ddfcam/io/cutter_tool.h>
-#include <ddfcam/io/machine_file.h>
-#include <ddfcam/io/path_file.h>
+#include <ddfcam/io/programs/apt_writer.h>
+#include <ddfcam/io/programs/cutter_tool.h>
+#include <ddfcam/io/programs/machine_file.h>
+#include <ddfcam/io/programs/path_file.h>
 
 #include "arguments.h"
 #include "commands.h"
@@ -188,8 +188,8 @@ void printSummary(const std::filesystem::path& in, const io::ClProgram& program,
       "%s (%s): %zu points, %d paths, unit %s, bounds [%.6g, %.6g] x [%.6g, %.6g] x "
       "[%.6g, %.6g] mm -> %s (%s)\n",
       in.string().c_str(), std::string(io::pathFormatName(inFormat)).c_str(), program.points.size(),
-      program.pathCount(), std::string(io::unitSymbol(program.sourceUnit)).c_str(), lo.x(),
-      hi.x(), lo.y(), hi.y(), lo.z(), hi.z(), out.string().c_str(),
+      program.pathCount(), std::string(io::unitSymbol(program.sourceUnit)).c_str(), lo.x(), hi.x(),
+      lo.y(), hi.y(), lo.z(), hi.z(), out.string().c_str(),
       std::string(io::pathFormatName(outFormat)).c_str());
 }
 

@@ -2,13 +2,13 @@
 // ddfcam-cli plan: streamline tool paths over a whole part, linked and written as CSV.
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/error.h>
-#include <ddfcam/io/part_loader.h>
-#include <ddfcam/io/tool_path_csv.h>
-#include <ddfcam/planning/curvature.h>
-#include <ddfcam/planning/path_linking.h>
+#include <ddfcam/io/mesh/part_loader.h>
+#include <ddfcam/io/programs/tool_path_csv.h>
+#include <ddfcam/planning/analysis/curvature.h>
+#include <ddfcam/planning/lines/scallop_spacing.h>
+#include <ddfcam/planning/lines/streamline_path.h>
 #include <ddfcam/planning/pipeline/region_planning.h>
-#include <ddfcam/planning/scallop_spacing.h>
-#include <ddfcam/planning/streamline_path.h>
+#include <ddfcam/planning/placement/path_linking.h>
 
 #include "arguments.h"
 #include "commands.h"

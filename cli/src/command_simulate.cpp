@@ -3,20 +3,20 @@
 // a JSON report of the deviation statistics (dissertation sec. 8.4).
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/error.h>
-#include <ddfcam/io/ddf_file.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/io/mesh_units.h>
-#include <ddfcam/io/part_loader.h>
-#include <ddfcam/io/project_file.h>
-#include <ddfcam/io/tool_path_csv.h>
-#include <ddfcam/io/vtp_writer.h>
-#include <ddfcam/planning/coverage.h>
-#include <ddfcam/planning/error_map.h>
-#include <ddfcam/planning/grinding_simulation.h>
-#include <ddfcam/planning/penetration_correction.h>
+#include <ddfcam/io/mesh/ddf_file.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/io/mesh/mesh_units.h>
+#include <ddfcam/io/mesh/part_loader.h>
+#include <ddfcam/io/programs/tool_path_csv.h>
+#include <ddfcam/io/project/project_file.h>
+#include <ddfcam/io/results/vtp_writer.h>
+#include <ddfcam/planning/inspection/coverage.h>
+#include <ddfcam/planning/inspection/error_map.h>
 #include <ddfcam/planning/pipeline/simulation_stage.h>
-#include <ddfcam/planning/preston_removal.h>
-#include <ddfcam/planning/workpiece.h>
+#include <ddfcam/planning/placement/penetration_correction.h>
+#include <ddfcam/planning/simulation/grinding_simulation.h>
+#include <ddfcam/planning/simulation/preston_removal.h>
+#include <ddfcam/planning/simulation/workpiece.h>
 
 #include "arguments.h"
 #include "commands.h"

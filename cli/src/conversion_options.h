@@ -4,7 +4,7 @@
 #pragma once
 
 #include <ddfcam/ddf/mesh_conversion.h>
-#include <ddfcam/io/part_loader.h>
+#include <ddfcam/io/mesh/part_loader.h>
 
 #include "arguments.h"
 

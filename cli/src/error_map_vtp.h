@@ -4,8 +4,8 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/triangle_mesh.h>
-#include <ddfcam/io/vtp_writer.h>
-#include <ddfcam/planning/error_map.h>
+#include <ddfcam/io/results/vtp_writer.h>
+#include <ddfcam/planning/inspection/error_map.h>
 
 namespace ddfcam::cli {
 

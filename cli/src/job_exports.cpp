@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // ddfcam-cli run: the files of a job: project, path exports, error map, screenshots, report.
 #include <ddfcam/error.h>
-#include <ddfcam/io/project_file.h>
-#include <ddfcam/io/vtp_writer.h>
+#include <ddfcam/io/project/project_file.h>
+#include <ddfcam/io/results/vtp_writer.h>
 
 #include "error_map_vtp.h"
 #include "job_exports.h"

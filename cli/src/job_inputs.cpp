@@ -6,14 +6,14 @@
 #include "unit_options.h"
 
 #include <ddfcam/error.h>
-#include <ddfcam/io/project_file.h>
-#include <ddfcam/io/project_loader.h>
+#include <ddfcam/io/project/project_file.h>
+#include <ddfcam/io/project/project_loader.h>
 #include <ddfcam/log.h>
-#include <ddfcam/planning/demo_project.h>
+#include <ddfcam/planning/analysis/region_editing.h>
+#include <ddfcam/planning/analysis/segmentation.h>
+#include <ddfcam/planning/lines/spacing_refinement.h>
+#include <ddfcam/planning/model/demo_project.h>
 #include <ddfcam/planning/pipeline/region_planning.h>
-#include <ddfcam/planning/region_editing.h>
-#include <ddfcam/planning/segmentation.h>
-#include <ddfcam/planning/spacing_refinement.h>
 
 #include <algorithm>
 #include <numeric>

@@ -3,8 +3,8 @@
 // (the planning pipeline the workbench panels call too).
 #pragma once
 
-#include <ddfcam/planning/curvature.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/analysis/curvature.h>
+#include <ddfcam/planning/model/project.h>
 
 #include "job_runner.h"
 #include "job_spec.h"

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // ddfcam-cli run: the path files of a job (CSV, APT/CLDATA, G-code) from the project's paths.
 #include <ddfcam/error.h>
-#include <ddfcam/io/cl_program_builder.h>
-#include <ddfcam/io/path_file.h>
-#include <ddfcam/io/tool_path_csv.h>
+#include <ddfcam/io/programs/cl_program_builder.h>
+#include <ddfcam/io/programs/path_file.h>
+#include <ddfcam/io/programs/tool_path_csv.h>
 
 #include "job_exports.h"
 

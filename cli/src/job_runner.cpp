@@ -3,10 +3,10 @@
 #include "job_runner.h"
 
 #include <ddfcam/error.h>
-#include <ddfcam/planning/curvature.h>
-#include <ddfcam/planning/grinding_simulation.h>
-#include <ddfcam/planning/tool.h>
-#include <ddfcam/planning/workpiece.h>
+#include <ddfcam/planning/analysis/curvature.h>
+#include <ddfcam/planning/simulation/grinding_simulation.h>
+#include <ddfcam/planning/simulation/workpiece.h>
+#include <ddfcam/planning/tools/tool.h>
 
 #include "job_inputs.h"
 

@@ -3,9 +3,9 @@
 // and the files they write.
 #pragma once
 
-#include <ddfcam/planning/error_map.h>
-#include <ddfcam/planning/grinding_simulation.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/inspection/error_map.h>
+#include <ddfcam/planning/model/project.h>
+#include <ddfcam/planning/simulation/grinding_simulation.h>
 
 #include "job_spec.h"
 

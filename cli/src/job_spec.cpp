@@ -3,7 +3,7 @@
 #include "job_spec.h"
 
 #include <ddfcam/error.h>
-#include <ddfcam/io/tool_library_file.h>
+#include <ddfcam/io/project/tool_library_file.h>
 
 #include "json_fields.h"
 

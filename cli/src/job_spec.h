@@ -4,13 +4,13 @@
 
 #include <ddfcam/ddf/mesh_conversion.h>
 #include <ddfcam/length_unit.h>
-#include <ddfcam/planning/error_map.h>
-#include <ddfcam/planning/grinding_simulation.h>
-#include <ddfcam/planning/region_plan.h>
-#include <ddfcam/planning/segmentation.h>
-#include <ddfcam/planning/streamline.h>
-#include <ddfcam/planning/streamline_path.h>
-#include <ddfcam/planning/tool.h>
+#include <ddfcam/planning/analysis/segmentation.h>
+#include <ddfcam/planning/inspection/error_map.h>
+#include <ddfcam/planning/lines/streamline.h>
+#include <ddfcam/planning/lines/streamline_path.h>
+#include <ddfcam/planning/model/region_plan.h>
+#include <ddfcam/planning/simulation/grinding_simulation.h>
+#include <ddfcam/planning/tools/tool.h>
 
 #include <filesystem>
 #include <optional>

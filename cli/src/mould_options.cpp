@@ -3,8 +3,8 @@
 #include "mould_options.h"
 
 #include <ddfcam/error.h>
-#include <ddfcam/io/mesh_units.h>
-#include <ddfcam/io/surface_file.h>
+#include <ddfcam/io/mesh/mesh_units.h>
+#include <ddfcam/io/mesh/surface_file.h>
 
 #include "arguments.h"
 #include "unit_options.h"

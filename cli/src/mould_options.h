@@ -4,7 +4,7 @@
 #pragma once
 
 #include <ddfcam/length_unit.h>
-#include <ddfcam/planning/mould_study.h>
+#include <ddfcam/planning/mould/mould_study.h>
 
 #include <chrono>
 #include <filesystem>

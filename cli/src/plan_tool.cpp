@@ -3,7 +3,7 @@
 #include "plan_tool.h"
 
 #include <ddfcam/error.h>
-#include <ddfcam/planning/streamline_path.h>
+#include <ddfcam/planning/lines/streamline_path.h>
 
 #include <charconv>
 #include <cmath>

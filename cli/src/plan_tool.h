@@ -4,12 +4,12 @@
 #pragma once
 
 #include <ddfcam/ddf/displacement_field.h>
-#include <ddfcam/io/tool_path_csv.h>
-#include <ddfcam/planning/path_linking.h>
-#include <ddfcam/planning/path_sampling.h>
-#include <ddfcam/planning/streamline.h>
-#include <ddfcam/planning/tool.h>
-#include <ddfcam/planning/tool_orientation.h>
+#include <ddfcam/io/programs/tool_path_csv.h>
+#include <ddfcam/planning/lines/streamline.h>
+#include <ddfcam/planning/placement/path_linking.h>
+#include <ddfcam/planning/placement/path_sampling.h>
+#include <ddfcam/planning/placement/tool_orientation.h>
+#include <ddfcam/planning/tools/tool.h>
 
 #include "arguments.h"
 

@@ -4,10 +4,10 @@
 #pragma once
 
 #include <ddfcam/ddf/displacement_field.h>
-#include <ddfcam/planning/coverage.h>
-#include <ddfcam/planning/error_map.h>
-#include <ddfcam/planning/grinding_simulation.h>
-#include <ddfcam/planning/tool_path.h>
+#include <ddfcam/planning/inspection/coverage.h>
+#include <ddfcam/planning/inspection/error_map.h>
+#include <ddfcam/planning/model/tool_path.h>
+#include <ddfcam/planning/simulation/grinding_simulation.h>
 
 #include "run_warnings.h"
 #include "simulate_inputs.h"

@@ -4,9 +4,9 @@
 
 #include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/error.h>
-#include <ddfcam/io/imported_path.h>
-#include <ddfcam/io/path_file.h>
-#include <ddfcam/planning/mesh_distance.h>
+#include <ddfcam/io/programs/imported_path.h>
+#include <ddfcam/io/programs/path_file.h>
+#include <ddfcam/planning/surface/mesh_distance.h>
 
 #include <algorithm>
 #include <cstdio>

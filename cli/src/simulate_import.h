@@ -3,8 +3,8 @@
 #pragma once
 
 #include <ddfcam/ddf/displacement_field.h>
-#include <ddfcam/io/cl_program.h>
-#include <ddfcam/io/path_file.h>
+#include <ddfcam/io/programs/cl_program.h>
+#include <ddfcam/io/programs/path_file.h>
 
 #include "json_writer.h"
 #include "simulate_inputs.h"

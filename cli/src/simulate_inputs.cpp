@@ -5,7 +5,7 @@
 #include <ddfcam/ddf/surface_locator.h>
 #include <ddfcam/ddf/surface_sampling.h>
 #include <ddfcam/error.h>
-#include <ddfcam/io/tool_library_file.h>
+#include <ddfcam/io/project/tool_library_file.h>
 
 #include <Eigen/Geometry>
 

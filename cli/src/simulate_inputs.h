@@ -3,15 +3,15 @@
 #pragma once
 
 #include <ddfcam/ddf/displacement_field.h>
-#include <ddfcam/io/cl_program.h>
-#include <ddfcam/io/imported_path.h>
-#include <ddfcam/io/tool_path_csv.h>
+#include <ddfcam/io/programs/cl_program.h>
+#include <ddfcam/io/programs/imported_path.h>
+#include <ddfcam/io/programs/tool_path_csv.h>
 #include <ddfcam/length_unit.h>
-#include <ddfcam/planning/coverage.h>
-#include <ddfcam/planning/path_sampling.h>
-#include <ddfcam/planning/tool.h>
-#include <ddfcam/planning/tool_orientation.h>
-#include <ddfcam/planning/tool_path.h>
+#include <ddfcam/planning/inspection/coverage.h>
+#include <ddfcam/planning/model/tool_path.h>
+#include <ddfcam/planning/placement/path_sampling.h>
+#include <ddfcam/planning/placement/tool_orientation.h>
+#include <ddfcam/planning/tools/tool.h>
 
 #include <Eigen/Geometry>
 

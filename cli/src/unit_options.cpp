@@ -5,7 +5,7 @@
 #include "console.h"
 
 #include <ddfcam/error.h>
-#include <ddfcam/io/project_loader.h>
+#include <ddfcam/io/project/project_loader.h>
 
 #include <cstdio>
 #include <string>

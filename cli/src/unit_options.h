@@ -3,9 +3,9 @@
 // warning when a file's size suggests another unit.
 #pragma once
 
-#include <ddfcam/io/part_loader.h>
+#include <ddfcam/io/mesh/part_loader.h>
 #include <ddfcam/length_unit.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include "arguments.h"
 

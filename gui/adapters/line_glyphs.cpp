@@ -4,7 +4,7 @@
 
 #include <ddfcam/error.h>
 #include <ddfcam/gui/adapters/poly_data.h>
-#include <ddfcam/planning/streamline_path.h>
+#include <ddfcam/planning/lines/streamline_path.h>
 
 #include <vtkCellArray.h>
 #include <vtkPoints.h>

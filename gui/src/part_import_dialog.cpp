@@ -3,8 +3,8 @@
 #include <ddfcam/gui/part_import_dialog.h>
 
 #include <ddfcam/error.h>
-#include <ddfcam/io/cad_model.h>
-#include <ddfcam/io/mesh_io.h>
+#include <ddfcam/io/cad/cad_model.h>
+#include <ddfcam/io/mesh/mesh_io.h>
 
 #include <QButtonGroup>
 #include <QComboBox>

@@ -7,7 +7,7 @@
 #include <ddfcam/gui/adapters/poly_data.h>
 #include <ddfcam/gui/part_scene.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/planning/field_statistics.h>
+#include <ddfcam/planning/model/field_statistics.h>
 
 #include <algorithm>
 #include <cmath>

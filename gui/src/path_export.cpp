@@ -5,10 +5,10 @@
 #include <ddfcam/error.h>
 #include <ddfcam/gui/console_dock.h>
 #include <ddfcam/gui/project_actions.h>
-#include <ddfcam/io/cl_program_builder.h>
-#include <ddfcam/io/machine_file.h>
-#include <ddfcam/io/path_file.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/io/programs/cl_program_builder.h>
+#include <ddfcam/io/programs/machine_file.h>
+#include <ddfcam/io/programs/path_file.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QDir>
 #include <QFileInfo>

@@ -2,8 +2,8 @@
 // ddfcam gui: PathExportDialog, the widgets that gather PathExportOptions.
 #include <ddfcam/gui/path_export_dialog.h>
 
-#include <ddfcam/planning/path_regions.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/path_regions.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QComboBox>
 #include <QDialogButtonBox>

@@ -7,9 +7,9 @@
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/document_command.h>
 #include <ddfcam/gui/project_actions.h>
-#include <ddfcam/io/cutter_tool.h>
-#include <ddfcam/io/path_file.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/io/programs/cutter_tool.h>
+#include <ddfcam/io/programs/path_file.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -8,10 +8,10 @@
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/recent_files.h>
 #include <ddfcam/gui/recovery_manager.h>
-#include <ddfcam/io/project_file.h>
-#include <ddfcam/io/project_loader.h>
+#include <ddfcam/io/project/project_file.h>
+#include <ddfcam/io/project/project_loader.h>
 #include <ddfcam/log.h>
-#include <ddfcam/planning/demo_project.h>
+#include <ddfcam/planning/model/demo_project.h>
 
 #include <QDateTime>
 #include <QFileInfo>

@@ -3,7 +3,7 @@
 #include <ddfcam/error.h>
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/recovery_manager.h>
-#include <ddfcam/io/project_file.h>
+#include <ddfcam/io/project/project_file.h>
 #include <ddfcam/log.h>
 
 #include <QDir>

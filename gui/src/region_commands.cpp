@@ -3,7 +3,7 @@
 #include <ddfcam/gui/region_commands.h>
 
 #include <ddfcam/error.h>
-#include <ddfcam/planning/region_editing.h>
+#include <ddfcam/planning/analysis/region_editing.h>
 
 #include <utility>
 

@@ -2,7 +2,7 @@
 // Tests of the 3D convex hull against analytic volumes and brute-force containment.
 #include <ddfcam/ddf/convex_hull.h>
 #include <ddfcam/error.h>
-#include <ddfcam/planning/tool_shapes.h>
+#include <ddfcam/planning/tools/tool_shapes.h>
 
 #include <gtest/gtest.h>
 

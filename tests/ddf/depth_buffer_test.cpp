@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/ddf/depth_buffer.h>
-#include <ddfcam/planning/tool_shapes.h>
+#include <ddfcam/planning/tools/tool_shapes.h>
 
 #include <gtest/gtest.h>
 

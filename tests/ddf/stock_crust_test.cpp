@@ -8,7 +8,7 @@
 #include <ddfcam/ddf/stock_crust.h>
 #include <ddfcam/ddf/validation.h>
 #include <ddfcam/error.h>
-#include <ddfcam/planning/workpiece.h>
+#include <ddfcam/planning/simulation/workpiece.h>
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // Tests of the dry-run stubble probe against analytic entry and exit heights on a z-map.
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/ddf/stubble_probe.h>
-#include <ddfcam/planning/tool_shapes.h>
+#include <ddfcam/planning/tools/tool_shapes.h>
 
 #include <gtest/gtest.h>
 

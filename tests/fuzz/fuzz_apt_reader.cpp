@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // ddfcam fuzzing: the APT/CLDATA reader (decodeApt) on arbitrary bytes.
-#include <ddfcam/io/apt_reader.h>
+#include <ddfcam/io/programs/apt_reader.h>
 
 #include "fuzz_support.h"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // ddfcam fuzzing: the tool-path CSV reader (decodeToolPathCsv) on arbitrary bytes.
-#include <ddfcam/io/tool_path_csv.h>
+#include <ddfcam/io/programs/tool_path_csv.h>
 
 #include "fuzz_support.h"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // ddfcam fuzzing: the FANUC TP .ls reader (decodeFanucLs) on arbitrary bytes.
-#include <ddfcam/io/fanuc_ls_reader.h>
+#include <ddfcam/io/programs/fanuc_ls_reader.h>
 
 #include "fuzz_support.h"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // ddfcam fuzzing: format detection and dispatch of readPathFile on arbitrary files.
-#include <ddfcam/io/path_file.h>
+#include <ddfcam/io/programs/path_file.h>
 
 #include "fuzz_support.h"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // ddfcam fuzzing: the ROS toolpath YAML reader (decodeRosToolpathYaml) on arbitrary bytes.
-#include <ddfcam/io/ros_toolpath_reader.h>
+#include <ddfcam/io/programs/ros_toolpath_reader.h>
 
 #include "fuzz_support.h"
 

@@ -10,9 +10,9 @@
 #include <ddfcam/gui/panels/simulation_panel.h>
 #include <ddfcam/gui/panels/spacing_refinement_panel.h>
 #include <ddfcam/gui/panels/streamlines_panel.h>
-#include <ddfcam/io/ddf_file.h>
-#include <ddfcam/io/project_file.h>
-#include <ddfcam/io/project_loader.h>
+#include <ddfcam/io/mesh/ddf_file.h>
+#include <ddfcam/io/project/project_file.h>
+#include <ddfcam/io/project/project_loader.h>
 
 #include <QImage>
 #include <QtTest/QtTest>

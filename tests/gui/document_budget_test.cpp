@@ -4,7 +4,7 @@
 
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/document_command.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QSignalSpy>
 #include <QUndoStack>

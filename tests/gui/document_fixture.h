@@ -3,7 +3,7 @@
 #pragma once
 
 #include <ddfcam/ddf/analytic_generators.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <cstddef>
 #include <string>

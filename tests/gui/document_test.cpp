@@ -6,7 +6,7 @@
 #include <ddfcam/error.h>
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/document_command.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QSignalSpy>
 #include <QUndoStack>

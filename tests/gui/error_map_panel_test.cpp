@@ -16,8 +16,8 @@
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/plot_dock.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/planning/demo_project.h>
-#include <ddfcam/planning/path_simulation.h>
+#include <ddfcam/planning/model/demo_project.h>
+#include <ddfcam/planning/simulation/path_simulation.h>
 
 #include <qcustomplot.h>
 #include <QDockWidget>

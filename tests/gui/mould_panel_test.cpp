@@ -14,8 +14,8 @@
 #include <ddfcam/gui/panels/mould_panel.h>
 #include <ddfcam/gui/plot_dock.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/planning/surface_comparison.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/planning/inspection/surface_comparison.h>
 
 #include <qcustomplot.h>
 #include <QDir>

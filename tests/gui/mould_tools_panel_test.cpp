@@ -12,9 +12,9 @@
 #include <ddfcam/gui/mould_view.h>
 #include <ddfcam/gui/panels/mould_tools_panel.h>
 #include <ddfcam/gui/plot_dock.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/planning/project.h>
-#include <ddfcam/planning/surface_comparison.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/planning/inspection/surface_comparison.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <qcustomplot.h>
 #include <QTabWidget>

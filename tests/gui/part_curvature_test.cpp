@@ -10,8 +10,8 @@
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/vtk_error_monitor.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QtTest/QtTest>
 

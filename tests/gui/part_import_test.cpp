@@ -20,9 +20,9 @@
 #include <ddfcam/gui/project_actions.h>
 #include <ddfcam/gui/vtk_error_monitor.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/io/cad_model.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/io/cad/cad_model.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QComboBox>
 #include <QDockWidget>

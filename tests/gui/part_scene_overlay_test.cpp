@@ -13,7 +13,7 @@
 #include <ddfcam/gui/part_scene.h>
 #include <ddfcam/gui/vtk_error_monitor.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/planning/tool_shapes.h>
+#include <ddfcam/planning/tools/tool_shapes.h>
 
 #include <QSignalSpy>
 #include <QtTest/QtTest>

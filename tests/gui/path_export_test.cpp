@@ -9,9 +9,9 @@
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/path_export_dialog.h>
 #include <ddfcam/gui/vtk_error_monitor.h>
-#include <ddfcam/io/apt_reader.h>
-#include <ddfcam/io/tool_path_csv.h>
-#include <ddfcam/planning/demo_project.h>
+#include <ddfcam/io/programs/apt_reader.h>
+#include <ddfcam/io/programs/tool_path_csv.h>
+#include <ddfcam/planning/model/demo_project.h>
 
 #include <QAction>
 #include <QComboBox>

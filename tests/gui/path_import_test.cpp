@@ -14,8 +14,8 @@
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/path_import.h>
 #include <ddfcam/gui/vtk_error_monitor.h>
-#include <ddfcam/io/apt_reader.h>
-#include <ddfcam/planning/demo_project.h>
+#include <ddfcam/io/programs/apt_reader.h>
+#include <ddfcam/planning/model/demo_project.h>
 
 #include <QAction>
 #include <QComboBox>

@@ -3,7 +3,7 @@
 #include <ddfcam/error.h>
 #include <ddfcam/gui/adapters/plot_series.h>
 #include <ddfcam/gui/plot_dock.h>
-#include <ddfcam/planning/field_statistics.h>
+#include <ddfcam/planning/model/field_statistics.h>
 
 #include <qcustomplot.h>
 

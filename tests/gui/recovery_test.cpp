@@ -5,7 +5,7 @@
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/document_command.h>
 #include <ddfcam/gui/recovery_manager.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QDir>
 #include <QFile>

@@ -14,8 +14,8 @@
 #include <ddfcam/gui/region_commands.h>
 #include <ddfcam/gui/vtk_error_monitor.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/planning/project.h>
-#include <ddfcam/planning/region_editing.h>
+#include <ddfcam/planning/analysis/region_editing.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QAction>
 #include <QCheckBox>

@@ -12,9 +12,9 @@
 #include <ddfcam/gui/part_scene.h>
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/planning/project.h>
-#include <ddfcam/planning/region_editing.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/planning/analysis/region_editing.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QAction>
 #include <QElapsedTimer>

@@ -5,8 +5,8 @@
 
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/ddf/analytic_surface.h>
-#include <ddfcam/planning/demo_project.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/demo_project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <memory>
 #include <vector>

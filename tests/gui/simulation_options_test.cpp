@@ -10,9 +10,9 @@
 #include <ddfcam/gui/panels/simulation_options.h>
 #include <ddfcam/gui/panels/simulation_panel.h>
 #include <ddfcam/gui/panels/simulation_playback.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/planning/tool_placement.h>
-#include <ddfcam/planning/workpiece.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/planning/placement/tool_placement.h>
+#include <ddfcam/planning/simulation/workpiece.h>
 
 #include <QDockWidget>
 #include <QLabel>

@@ -13,7 +13,7 @@
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/tool_overlay.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/planning/path_simulation.h>
+#include <ddfcam/planning/simulation/path_simulation.h>
 
 #include <QDockWidget>
 #include <QLabel>

@@ -14,8 +14,8 @@
 #include <ddfcam/gui/path_list.h>
 #include <ddfcam/gui/vtk_error_monitor.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/planning/project.h>
-#include <ddfcam/planning/streamline.h>
+#include <ddfcam/planning/lines/streamline.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QLabel>
 #include <QTableWidget>

@@ -8,7 +8,7 @@
 #include <ddfcam/gui/panels/streamlines_panel.h>
 #include <ddfcam/gui/part_scene.h>
 #include <ddfcam/gui/part_view.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QtTest/QtTest>
 

@@ -15,8 +15,8 @@
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/vtk_error_monitor.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/planning/project.h>
-#include <ddfcam/planning/streamline.h>
+#include <ddfcam/planning/lines/streamline.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QComboBox>
 #include <QDockWidget>

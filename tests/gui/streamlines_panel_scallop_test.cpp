@@ -12,7 +12,7 @@
 #include <ddfcam/gui/panels/streamlines_panel.h>
 #include <ddfcam/gui/vtk_error_monitor.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QDockWidget>
 #include <QLabel>

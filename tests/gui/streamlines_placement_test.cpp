@@ -6,7 +6,7 @@
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/panels/streamlines_panel.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>

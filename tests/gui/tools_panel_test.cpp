@@ -11,7 +11,7 @@
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/tool_overlay.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/io/tool_library_file.h>
+#include <ddfcam/io/project/tool_library_file.h>
 
 #include <QDockWidget>
 #include <QDoubleSpinBox>

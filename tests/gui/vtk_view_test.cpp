@@ -8,7 +8,7 @@
 #include <ddfcam/gui/camera_tool_bar.h>
 #include <ddfcam/gui/vtk_error_monitor.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/planning/tool_shapes.h>
+#include <ddfcam/planning/tools/tool_shapes.h>
 
 #include <QAction>
 #include <QSignalSpy>

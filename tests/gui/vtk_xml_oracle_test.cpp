@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // ddfcam tests: our VTK XML reader (io, no VTK) against files written by VTK's own XML writers.
-#include <ddfcam/io/vtk_xml_mesh.h>
+#include <ddfcam/io/mesh/vtk_xml_mesh.h>
 
 #include <gtest/gtest.h>
 

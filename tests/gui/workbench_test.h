@@ -7,7 +7,7 @@
 #include <ddfcam/gui/app_setup.h>
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/vtk_error_monitor.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QDockWidget>
 #include <QObject>

@@ -19,7 +19,7 @@
 #include <ddfcam/gui/recovery_manager.h>
 #include <ddfcam/gui/vtk_error_monitor.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QAction>
 #include <QDockWidget>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Runs ddfcam-cli compare on analytic sheets (a plane mould against a sinusoid: the area within
 // +-tol is (2/pi) asin(tol/A)) and once on the shared forming pair.
-#include <ddfcam/io/mesh_io.h>
+#include <ddfcam/io/mesh/mesh_io.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

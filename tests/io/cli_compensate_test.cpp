@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Runs ddfcam-cli compensate on a plane target with sinusoidal springback: the linear model's
 // alpha^j law and one-step convergence for lambda = 1/(1-alpha), and an imported history.
-#include <ddfcam/io/mesh_io.h>
+#include <ddfcam/io/mesh/mesh_io.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // ddfcam-cli convert: it says what it repaired and dropped, and an invalid result is named as
 // such (non-zero exit, no file) unless --allow-invalid is given.
-#include <ddfcam/io/mesh_io.h>
+#include <ddfcam/io/mesh/mesh_io.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

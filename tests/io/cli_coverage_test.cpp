@@ -2,9 +2,9 @@
 // Runs ddfcam-cli simulate and compare on results that used to "succeed" silently: a path
 // translated off the part, a tool plunged through the crust, a patch over a fraction of a mould.
 // Checks the coverage and clamping figures against analytic values, the warnings and --strict.
-#include <ddfcam/io/ddf_file.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/io/tool_path_csv.h>
+#include <ddfcam/io/mesh/ddf_file.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/io/programs/tool_path_csv.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

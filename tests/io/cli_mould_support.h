@@ -3,7 +3,7 @@
 #pragma once
 
 #include <ddfcam/ddf/triangle_mesh.h>
-#include <ddfcam/io/mesh_io.h>
+#include <ddfcam/io/mesh/mesh_io.h>
 
 #include "../support/test_meshes.h"
 

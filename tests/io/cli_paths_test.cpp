@@ -2,11 +2,11 @@
 // Runs ddfcam-cli paths and simulate on path files: every shared file to CSV and APT and back,
 // G-code through rs274, APT against CSV in the simulation, units and transforms, bad input.
 #include <ddfcam/ddf/analytic_generators.h>
-#include <ddfcam/io/apt_reader.h>
-#include <ddfcam/io/apt_writer.h>
-#include <ddfcam/io/ddf_file.h>
-#include <ddfcam/io/path_file.h>
-#include <ddfcam/io/tool_path_csv.h>
+#include <ddfcam/io/mesh/ddf_file.h>
+#include <ddfcam/io/programs/apt_reader.h>
+#include <ddfcam/io/programs/apt_writer.h>
+#include <ddfcam/io/programs/path_file.h>
+#include <ddfcam/io/programs/tool_path_csv.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -21,7 +21,7 @@
 #include <sstream>
 
 #include "cli_simulate_support.h"
-#include "rs274_run.h"
+#include "programs/rs274_run.h"
 
 namespace ddfcam::io {
 namespace {

@@ -3,9 +3,9 @@
 // CSV against geometric truth (straight lines along the axis, the requested spacing, contacts
 // on the part).
 #include <ddfcam/ddf/analytic_generators.h>
-#include <ddfcam/io/ddf_file.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/io/tool_path_csv.h>
+#include <ddfcam/io/mesh/ddf_file.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/io/programs/tool_path_csv.h>
 #include "../support/brute_force_distance.h"
 
 #include <gmock/gmock.h>

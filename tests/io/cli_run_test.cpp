@@ -2,12 +2,12 @@
 // Runs ddfcam-cli run on small jobs on the demo part: outputs read back with the project's own
 // readers, two runs give identical bytes, and bad jobs fail naming the problem.
 #include <ddfcam/ddf/analytic_generators.h>
-#include <ddfcam/io/ddf_file.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/io/project_file.h>
-#include <ddfcam/io/tool_library_file.h>
-#include <ddfcam/io/tool_path_csv.h>
-#include <ddfcam/planning/scallop_spacing.h>
+#include <ddfcam/io/mesh/ddf_file.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/io/programs/tool_path_csv.h>
+#include <ddfcam/io/project/project_file.h>
+#include <ddfcam/io/project/tool_library_file.h>
+#include <ddfcam/planning/lines/scallop_spacing.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -3,9 +3,9 @@
 // tolerance, penetration correction in a trough, Preston conservation, tool library and stock.
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/triangle_mesh.h>
-#include <ddfcam/io/ddf_file.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/io/tool_path_csv.h>
+#include <ddfcam/io/mesh/ddf_file.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/io/programs/tool_path_csv.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <ddfcam/ddf/displacement_field.h>
-#include <ddfcam/io/tool_path_csv.h>
+#include <ddfcam/io/programs/tool_path_csv.h>
 
 #include <sys/wait.h>
 

@@ -3,8 +3,8 @@
 // groove, plan + simulate on the demo part, the JSON writer, and bad arguments.
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/ddf/displacement_field.h>
-#include <ddfcam/io/ddf_file.h>
-#include <ddfcam/io/tool_path_csv.h>
+#include <ddfcam/io/mesh/ddf_file.h>
+#include <ddfcam/io/programs/tool_path_csv.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

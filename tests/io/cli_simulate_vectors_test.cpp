@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Runs ddfcam-cli simulate on a robot path (x,y,z,i,j,k, vectors into the part): --vectors
 // and --points, what auto detects, the gouge warning, and report figures that agree.
-#include <ddfcam/io/ddf_file.h>
+#include <ddfcam/io/mesh/ddf_file.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

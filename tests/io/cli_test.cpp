@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Runs the ddfcam-cli executable on small inputs and checks exit codes, messages and outputs.
 #include <ddfcam/ddf/analytic_generators.h>
-#include <ddfcam/io/ddf_file.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/io/project_file.h>
+#include <ddfcam/io/mesh/ddf_file.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/io/project/project_file.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -3,8 +3,8 @@
 // with --units m gives the DDF of the same part in mm, the size warning names --units, and
 // info reports the raster spacing, the crust reach, the source unit and the CAD faces; a reduced
 // .ddf keeps its input mesh, from which curvature takes the part's curvature.
-#include <ddfcam/io/ddf_file.h>
-#include <ddfcam/io/mesh_io.h>
+#include <ddfcam/io/mesh/ddf_file.h>
+#include <ddfcam/io/mesh/mesh_io.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // ddfcam tests: deterministic mutations of path-file texts and the reader contract they check.
 #pragma once
 
-#include <ddfcam/io/cl_program.h>
+#include <ddfcam/io/programs/cl_program.h>
 
 #include <cstdint>
 #include <optional>

@@ -4,7 +4,7 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/error.h>
-#include <ddfcam/io/cl_program.h>
+#include <ddfcam/io/programs/cl_program.h>
 
 #include <gtest/gtest.h>
 

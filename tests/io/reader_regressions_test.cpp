@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // ddfcam tests: every reproducer under tests/fuzz/regressions/<reader>/ keeps the reader contract.
 #include <ddfcam/error.h>
-#include <ddfcam/io/apt_reader.h>
-#include <ddfcam/io/fanuc_ls_reader.h>
-#include <ddfcam/io/path_file.h>
-#include <ddfcam/io/ros_toolpath_reader.h>
-#include <ddfcam/io/tool_path_csv.h>
+#include <ddfcam/io/programs/apt_reader.h>
+#include <ddfcam/io/programs/fanuc_ls_reader.h>
+#include <ddfcam/io/programs/path_file.h>
+#include <ddfcam/io/programs/ros_toolpath_reader.h>
+#include <ddfcam/io/programs/tool_path_csv.h>
 
 #include "fuzz_inputs.h"
 

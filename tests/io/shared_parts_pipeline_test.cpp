@@ -6,13 +6,13 @@
 
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/ddf/mesh_conversion.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/io/part_loader.h>
-#include <ddfcam/planning/curvature.h>
-#include <ddfcam/planning/evenly_spaced_streamlines.h>
-#include <ddfcam/planning/flow_field.h>
-#include <ddfcam/planning/path_linking.h>
-#include <ddfcam/planning/segmentation.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/io/mesh/part_loader.h>
+#include <ddfcam/planning/analysis/curvature.h>
+#include <ddfcam/planning/analysis/segmentation.h>
+#include <ddfcam/planning/flow/flow_field.h>
+#include <ddfcam/planning/lines/evenly_spaced_streamlines.h>
+#include <ddfcam/planning/placement/path_linking.h>
 
 #include <gtest/gtest.h>
 

@@ -6,9 +6,9 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/triangle_mesh.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/io/part_loader.h>
-#include <ddfcam/planning/curvature.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/io/mesh/part_loader.h>
+#include <ddfcam/planning/analysis/curvature.h>
 
 #include <algorithm>
 #include <chrono>

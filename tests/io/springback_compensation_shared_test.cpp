@@ -2,8 +2,8 @@
 // ddfcam tests: the compensation loop on the shared deep-drawn springback pair with the linear
 // model calibrated to the measured first forming.
 #include <ddfcam/ddf/mesh_conversion.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/planning/springback_compensation.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/planning/mould/springback_compensation.h>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // ddfcam tests: best fit of the shared formed part onto its target (springback-deepdrawn pair).
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/planning/surface_alignment.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/planning/mould/surface_alignment.h>
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // ddfcam tests: compareSurfaces on the shared deep-drawn springback pair, checked against exact
 // point-to-mesh distances.
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/planning/mesh_distance.h>
-#include <ddfcam/planning/surface_comparison.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/planning/inspection/surface_comparison.h>
+#include <ddfcam/planning/surface/mesh_distance.h>
 
 #include <gtest/gtest.h>
 

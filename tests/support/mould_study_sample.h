@@ -3,7 +3,7 @@
 #pragma once
 
 #include <ddfcam/ddf/analytic_generators.h>
-#include <ddfcam/planning/mould_study.h>
+#include <ddfcam/planning/mould/mould_study.h>
 
 #include <cmath>
 #include <limits>

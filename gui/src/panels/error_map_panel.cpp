@@ -8,7 +8,7 @@
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/plot_dock.h>
-#include <ddfcam/planning/workpiece.h>
+#include <ddfcam/planning/simulation/workpiece.h>
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -10,10 +10,10 @@
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/plot_dock.h>
-#include <ddfcam/planning/builtin_fields.h>
-#include <ddfcam/planning/curvature.h>
-#include <ddfcam/planning/field_statistics.h>
-#include <ddfcam/planning/segmentation.h>
+#include <ddfcam/planning/analysis/curvature.h>
+#include <ddfcam/planning/analysis/segmentation.h>
+#include <ddfcam/planning/model/builtin_fields.h>
+#include <ddfcam/planning/model/field_statistics.h>
 
 #include <QAction>
 #include <QCheckBox>

@@ -7,9 +7,9 @@
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/mould_commands.h>
 #include <ddfcam/gui/mould_view.h>
-#include <ddfcam/io/mesh_units.h>
-#include <ddfcam/io/surface_file.h>
-#include <ddfcam/planning/surface_alignment.h>
+#include <ddfcam/io/mesh/mesh_units.h>
+#include <ddfcam/io/mesh/surface_file.h>
+#include <ddfcam/planning/mould/surface_alignment.h>
 
 #include <QCheckBox>
 #include <QComboBox>

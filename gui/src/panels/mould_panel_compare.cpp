@@ -7,7 +7,7 @@
 #include <ddfcam/gui/mould_view.h>
 #include <ddfcam/gui/panels/mould_panel.h>
 #include <ddfcam/gui/plot_dock.h>
-#include <ddfcam/planning/surface_comparison.h>
+#include <ddfcam/planning/inspection/surface_comparison.h>
 
 #include <qcustomplot.h>
 

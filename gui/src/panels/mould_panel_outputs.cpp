@@ -7,10 +7,10 @@
 #include <ddfcam/gui/panels/mould_panel.h>
 #include <ddfcam/gui/plot_dock.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/io/deviation_export.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/planning/cross_section.h>
-#include <ddfcam/planning/surface_comparison.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/io/results/deviation_export.h>
+#include <ddfcam/planning/inspection/surface_comparison.h>
+#include <ddfcam/planning/surface/cross_section.h>
 
 #include <qcustomplot.h>
 

@@ -6,7 +6,7 @@
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/mould_view.h>
 #include <ddfcam/gui/plot_dock.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <qcustomplot.h>
 #include <QCheckBox>

@@ -9,7 +9,7 @@
 #include <ddfcam/ddf/deformation_sequence.h>
 #include <ddfcam/error.h>
 #include <ddfcam/gui/document.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

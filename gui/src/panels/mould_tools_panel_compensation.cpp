@@ -8,9 +8,9 @@
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/mould_commands.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/io/mesh_units.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/io/mesh/mesh_units.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -5,7 +5,7 @@
 #include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/mould_view.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 namespace ddfcam::gui {
 namespace {

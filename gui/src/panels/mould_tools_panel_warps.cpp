@@ -10,7 +10,7 @@
 #include <ddfcam/error.h>
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/mould_view.h>
-#include <ddfcam/io/mesh_io.h>
+#include <ddfcam/io/mesh/mesh_io.h>
 
 #include <QDoubleSpinBox>
 #include <QFileDialog>

@@ -5,7 +5,7 @@
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/project_actions.h>
-#include <ddfcam/planning/field_statistics.h>
+#include <ddfcam/planning/model/field_statistics.h>
 
 #include <QLabel>
 #include <QVBoxLayout>

@@ -8,9 +8,9 @@
 #include <ddfcam/gui/panels/region_plan_editor.h>
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/region_commands.h>
-#include <ddfcam/planning/curvature.h>
-#include <ddfcam/planning/region_editing.h>
-#include <ddfcam/planning/segmentation.h>
+#include <ddfcam/planning/analysis/curvature.h>
+#include <ddfcam/planning/analysis/region_editing.h>
+#include <ddfcam/planning/analysis/segmentation.h>
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -7,9 +7,9 @@
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/region_commands.h>
-#include <ddfcam/planning/cad_face_segmentation.h>
-#include <ddfcam/planning/curvature.h>
-#include <ddfcam/planning/segmentation.h>
+#include <ddfcam/planning/analysis/cad_face_segmentation.h>
+#include <ddfcam/planning/analysis/curvature.h>
+#include <ddfcam/planning/analysis/segmentation.h>
 
 #include <QCheckBox>
 #include <QComboBox>

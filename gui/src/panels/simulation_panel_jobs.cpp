@@ -9,11 +9,11 @@
 #include <ddfcam/gui/panels/simulation_options.h>
 #include <ddfcam/gui/panels/simulation_panel.h>
 #include <ddfcam/gui/path_commands.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/planning/coverage.h>
-#include <ddfcam/planning/grinding_simulation.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/planning/inspection/coverage.h>
 #include <ddfcam/planning/pipeline/simulation_stage.h>
-#include <ddfcam/planning/workpiece.h>
+#include <ddfcam/planning/simulation/grinding_simulation.h>
+#include <ddfcam/planning/simulation/workpiece.h>
 
 #include <QElapsedTimer>
 #include <QFileInfo>

@@ -13,10 +13,10 @@
 #include <ddfcam/gui/path_commands.h>
 #include <ddfcam/gui/path_list.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/planning/line_ordering.h>
-#include <ddfcam/planning/path_linking.h>
-#include <ddfcam/planning/streamline_fairing.h>
-#include <ddfcam/planning/streamline_path.h>
+#include <ddfcam/planning/lines/line_ordering.h>
+#include <ddfcam/planning/lines/streamline_fairing.h>
+#include <ddfcam/planning/lines/streamline_path.h>
+#include <ddfcam/planning/placement/path_linking.h>
 
 #include <QCheckBox>
 #include <QComboBox>

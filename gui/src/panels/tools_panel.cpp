@@ -9,7 +9,7 @@
 #include <ddfcam/gui/tool_commands.h>
 #include <ddfcam/gui/tool_overlay.h>
 #include <ddfcam/gui/vtk_view.h>
-#include <ddfcam/io/tool_library_file.h>
+#include <ddfcam/io/project/tool_library_file.h>
 
 #include <QComboBox>
 #include <QFileDialog>

@@ -2,7 +2,7 @@
 // ddfcam: the OpenCASCADE side of CadModel, seen only by io/src/cad.
 #pragma once
 
-#include <ddfcam/io/cad_model.h>
+#include <ddfcam/io/cad/cad_model.h>
 
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Face.hxx>

@@ -4,12 +4,12 @@
 
 #include <ddfcam/ddf/crust_hash.h>
 #include <ddfcam/error.h>
-#include <ddfcam/planning/evenly_spaced_streamlines.h>
-#include <ddfcam/planning/line_ordering.h>
-#include <ddfcam/planning/scallop_spacing.h>
-#include <ddfcam/planning/streamline_continuous.h>
-#include <ddfcam/planning/streamline_fairing.h>
-#include <ddfcam/planning/streamline_raster_walk.h>
+#include <ddfcam/planning/lines/evenly_spaced_streamlines.h>
+#include <ddfcam/planning/lines/line_ordering.h>
+#include <ddfcam/planning/lines/scallop_spacing.h>
+#include <ddfcam/planning/lines/streamline_continuous.h>
+#include <ddfcam/planning/lines/streamline_fairing.h>
+#include <ddfcam/planning/lines/streamline_raster_walk.h>
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 #include <ddfcam/planning/pipeline/simulation_stage.h>
 
 #include <ddfcam/error.h>
-#include <ddfcam/planning/tangential_grid.h>
+#include <ddfcam/planning/placement/tangential_grid.h>
 
 #include <cmath>
 #include <optional>

@@ -2,8 +2,8 @@
 #include "ddf/grinding_workloads.h"
 
 #include <ddfcam/ddf/analytic_generators.h>
-#include <ddfcam/planning/tool_placement.h>
-#include <ddfcam/planning/tool_shapes.h>
+#include <ddfcam/planning/placement/tool_placement.h>
+#include <ddfcam/planning/tools/tool_shapes.h>
 
 namespace ddfcam::bench {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <ddfcam/ddf/crust_hash.h>
 #include <ddfcam/ddf/stubble_probe.h>
-#include <ddfcam/planning/grinding_simulation.h>
-#include <ddfcam/planning/tool_shapes.h>
+#include <ddfcam/planning/simulation/grinding_simulation.h>
+#include <ddfcam/planning/tools/tool_shapes.h>
 
 #include <benchmark/benchmark.h>
 

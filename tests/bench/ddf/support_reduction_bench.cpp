@@ -10,8 +10,8 @@
 #include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/ddf/support_reduction.h>
 #include <ddfcam/ddf/validation.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/planning/mesh_distance.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/planning/surface/mesh_distance.h>
 
 #include <benchmark/benchmark.h>
 

@@ -3,13 +3,13 @@
 // 5-axis program, against a textbook stream-based CSV reader in the same run, and placing an
 // imported program on the demo part.
 #include <ddfcam/ddf/analytic_generators.h>
-#include <ddfcam/io/apt_reader.h>
-#include <ddfcam/io/apt_writer.h>
-#include <ddfcam/io/cl_program.h>
-#include <ddfcam/io/gcode_writer.h>
-#include <ddfcam/io/imported_path.h>
-#include <ddfcam/io/tool_path_csv.h>
-#include <ddfcam/planning/tool.h>
+#include <ddfcam/io/programs/apt_reader.h>
+#include <ddfcam/io/programs/apt_writer.h>
+#include <ddfcam/io/programs/cl_program.h>
+#include <ddfcam/io/programs/gcode_writer.h>
+#include <ddfcam/io/programs/imported_path.h>
+#include <ddfcam/io/programs/tool_path_csv.h>
+#include <ddfcam/planning/tools/tool.h>
 
 #include <benchmark/benchmark.h>
 

@@ -2,10 +2,10 @@
 // ddfcam-bench: the turbine blade grinding workload (ray-cast contacts on the shared mesh).
 #include "planning/blade_workload.h"
 
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/io/part_loader.h>
-#include <ddfcam/planning/tool_placement.h>
-#include <ddfcam/planning/tool_shapes.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/io/mesh/part_loader.h>
+#include <ddfcam/planning/placement/tool_placement.h>
+#include <ddfcam/planning/tools/tool_shapes.h>
 
 #include <algorithm>
 #include <filesystem>

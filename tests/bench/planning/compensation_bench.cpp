@@ -2,8 +2,8 @@
 // ddfcam benchmarks: one compensation step and the linear model's response on the shared
 // deep-drawn springback pair (target DDF at m = 4, 41,010 faces).
 #include <ddfcam/ddf/mesh_conversion.h>
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/planning/springback_compensation.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/planning/mould/springback_compensation.h>
 
 #include <benchmark/benchmark.h>
 

@@ -2,7 +2,7 @@
 // Benchmark: whole-surface principal curvature of the fig. 8.16 part (sec. 8.2; goal <= 20 ms).
 #include "ddf/grinding_workloads.h"
 
-#include <ddfcam/planning/curvature.h>
+#include <ddfcam/planning/analysis/curvature.h>
 
 #include <benchmark/benchmark.h>
 

@@ -2,9 +2,9 @@
 // Benchmark: Jobard-Lefer coverage of the fig. 8.16 part by k_max streamlines at several d_sep.
 #include "ddf/grinding_workloads.h"
 
-#include <ddfcam/planning/curvature.h>
-#include <ddfcam/planning/evenly_spaced_streamlines.h>
-#include <ddfcam/planning/path_linking.h>
+#include <ddfcam/planning/analysis/curvature.h>
+#include <ddfcam/planning/lines/evenly_spaced_streamlines.h>
+#include <ddfcam/planning/placement/path_linking.h>
 
 #include <benchmark/benchmark.h>
 

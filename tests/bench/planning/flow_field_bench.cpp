@@ -3,8 +3,8 @@
 // the coarse-to-fine Ceres solve against the direct (sparse Cholesky) reference.
 #include "ddf/grinding_workloads.h"
 
-#include <ddfcam/planning/curvature.h>
-#include <ddfcam/planning/flow_field.h>
+#include <ddfcam/planning/analysis/curvature.h>
+#include <ddfcam/planning/flow/flow_field.h>
 
 #include <benchmark/benchmark.h>
 

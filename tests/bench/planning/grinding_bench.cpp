@@ -6,9 +6,9 @@
 
 #include <ddfcam/ddf/crust_hash.h>
 #include <ddfcam/ddf/depth_buffer.h>
-#include <ddfcam/planning/penetration_correction.h>
-#include <ddfcam/planning/tool_orientation.h>
-#include <ddfcam/planning/workpiece.h>
+#include <ddfcam/planning/placement/penetration_correction.h>
+#include <ddfcam/planning/placement/tool_orientation.h>
+#include <ddfcam/planning/simulation/workpiece.h>
 
 #ifdef DDFCAM_HAVE_OPENVDB
 #include "planning/openvdb_peer.h"

@@ -4,10 +4,10 @@
 // (dissertation: 9.8 s / 0.6 s; goal: <= 20 ms for all 400), and a naive per-cell
 // ray / triangle reference for the speed ratio.
 #include <ddfcam/ddf/analytic_generators.h>
-#include <ddfcam/planning/penetration_correction.h>
-#include <ddfcam/planning/tangential_grid.h>
-#include <ddfcam/planning/tool_placement.h>
-#include <ddfcam/planning/tool_shapes.h>
+#include <ddfcam/planning/placement/penetration_correction.h>
+#include <ddfcam/planning/placement/tangential_grid.h>
+#include <ddfcam/planning/placement/tool_placement.h>
+#include <ddfcam/planning/tools/tool_shapes.h>
 
 #include <benchmark/benchmark.h>
 

@@ -2,11 +2,11 @@
 // Benchmarks of the core work behind the workbench shell on the demo session: the deviation
 // field (BVH vs brute force), cancel latency of a simulated path, project files, undo deltas.
 #include <ddfcam/error.h>
-#include <ddfcam/io/project_file.h>
-#include <ddfcam/planning/builtin_fields.h>
-#include <ddfcam/planning/demo_project.h>
-#include <ddfcam/planning/height_delta.h>
-#include <ddfcam/planning/path_simulation.h>
+#include <ddfcam/io/project/project_file.h>
+#include <ddfcam/planning/model/builtin_fields.h>
+#include <ddfcam/planning/model/demo_project.h>
+#include <ddfcam/planning/model/height_delta.h>
+#include <ddfcam/planning/simulation/path_simulation.h>
 
 #include <benchmark/benchmark.h>
 

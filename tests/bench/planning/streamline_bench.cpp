@@ -2,8 +2,8 @@
 // Benchmark: a family of 50 k_max streamlines on the fig. 8.16 part (sec. 8.3; goal <= 50 ms).
 #include "ddf/grinding_workloads.h"
 
-#include <ddfcam/planning/curvature.h>
-#include <ddfcam/planning/streamline.h>
+#include <ddfcam/planning/analysis/curvature.h>
+#include <ddfcam/planning/lines/streamline.h>
 
 #include <benchmark/benchmark.h>
 

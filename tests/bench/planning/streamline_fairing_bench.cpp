@@ -4,8 +4,8 @@
 
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/ddf/surface_sampling.h>
-#include <ddfcam/planning/streamline.h>
-#include <ddfcam/planning/streamline_fairing.h>
+#include <ddfcam/planning/lines/streamline.h>
+#include <ddfcam/planning/lines/streamline_fairing.h>
 
 #include <benchmark/benchmark.h>
 

@@ -3,10 +3,10 @@
 #include "ddf/grinding_workloads.h"
 
 #include <ddfcam/ddf/crust_hash.h>
-#include <ddfcam/planning/curvature.h>
-#include <ddfcam/planning/streamline.h>
-#include <ddfcam/planning/streamline_continuous.h>
-#include <ddfcam/planning/streamline_raster_walk.h>
+#include <ddfcam/planning/analysis/curvature.h>
+#include <ddfcam/planning/lines/streamline.h>
+#include <ddfcam/planning/lines/streamline_continuous.h>
+#include <ddfcam/planning/lines/streamline_raster_walk.h>
 
 #include <benchmark/benchmark.h>
 

@@ -2,9 +2,9 @@
 // Benchmark: compareSurfaces on the shared deep-drawn springback pair (41k triangles each), and
 // the ratio against a per-point distance reference (exact signed distance of every mould raster
 // point to the formed mesh, planning::MeshDistance) in the same run.
-#include <ddfcam/io/mesh_io.h>
-#include <ddfcam/planning/mesh_distance.h>
-#include <ddfcam/planning/surface_comparison.h>
+#include <ddfcam/io/mesh/mesh_io.h>
+#include <ddfcam/planning/inspection/surface_comparison.h>
+#include <ddfcam/planning/surface/mesh_distance.h>
 
 #include <benchmark/benchmark.h>
 

@@ -6,7 +6,7 @@
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/error.h>
 #include <ddfcam/planning/pipeline/simulation_stage.h>
-#include <ddfcam/planning/tool_orientation.h>
+#include <ddfcam/planning/placement/tool_orientation.h>
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // ddfcam gui: the workbench document: one planning::Project, its undo stack and change signals.
 #pragma once
 
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QFlags>
 #include <QObject>

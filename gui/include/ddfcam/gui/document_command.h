@@ -3,8 +3,8 @@
 #pragma once
 
 #include <ddfcam/gui/document.h>
-#include <ddfcam/planning/height_delta.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/height_delta.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QUndoCommand>
 

@@ -5,8 +5,8 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/gui/adapters/line_glyphs.h>
-#include <ddfcam/planning/curvature.h>
-#include <ddfcam/planning/flow_field.h>
+#include <ddfcam/planning/analysis/curvature.h>
+#include <ddfcam/planning/flow/flow_field.h>
 
 #include <array>
 #include <string>

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <ddfcam/gui/document_command.h>
-#include <ddfcam/planning/mould_study.h>
+#include <ddfcam/planning/mould/mould_study.h>
 
 #include <cstddef>
 #include <optional>

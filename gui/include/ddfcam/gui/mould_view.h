@@ -3,8 +3,8 @@
 #pragma once
 
 #include <ddfcam/ddf/triangle_mesh.h>
-#include <ddfcam/planning/error_map.h>
-#include <ddfcam/planning/mould_study.h>
+#include <ddfcam/planning/inspection/error_map.h>
+#include <ddfcam/planning/mould/mould_study.h>
 
 #include <Eigen/Core>
 

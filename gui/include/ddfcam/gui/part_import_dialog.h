@@ -5,7 +5,7 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/mesh_conversion.h>
-#include <ddfcam/io/part_loader.h>
+#include <ddfcam/io/mesh/part_loader.h>
 #include <ddfcam/length_unit.h>
 
 #include <QDialog>

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <ddfcam/gui/adapters/colour_map.h>
-#include <ddfcam/planning/error_map.h>
+#include <ddfcam/planning/inspection/error_map.h>
 
 #include <Eigen/Core>
 

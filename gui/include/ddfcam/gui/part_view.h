@@ -8,8 +8,8 @@
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/part_facts.h>
 #include <ddfcam/gui/part_geometry.h>
-#include <ddfcam/planning/error_map.h>
-#include <ddfcam/planning/tool.h>
+#include <ddfcam/planning/inspection/error_map.h>
+#include <ddfcam/planning/tools/tool.h>
 
 #include <Eigen/Geometry>
 #include <QObject>

@@ -3,7 +3,7 @@
 // which paths, file), their checks, the dialog that gathers them and the write itself.
 #pragma once
 
-#include <ddfcam/io/cl_program.h>
+#include <ddfcam/io/programs/cl_program.h>
 
 #include <QDialog>
 #include <QString>

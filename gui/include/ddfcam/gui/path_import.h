@@ -4,9 +4,9 @@
 #pragma once
 
 #include <ddfcam/ddf/support_mesh.h>
-#include <ddfcam/io/cl_program.h>
-#include <ddfcam/io/imported_path.h>
-#include <ddfcam/planning/tool.h>
+#include <ddfcam/io/programs/cl_program.h>
+#include <ddfcam/io/programs/imported_path.h>
+#include <ddfcam/planning/tools/tool.h>
 
 #include <QDialog>
 #include <QString>

@@ -2,7 +2,7 @@
 // ddfcam gui: the list of tool paths with line counts, cutting and idle lengths and a total.
 #pragma once
 
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QWidget>
 

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <ddfcam/gui/user_action.h>
-#include <ddfcam/planning/field_statistics.h>
+#include <ddfcam/planning/model/field_statistics.h>
 
 #include <QDockWidget>
 #include <QString>

@@ -5,7 +5,7 @@
 
 #include <ddfcam/gui/part_import_dialog.h>
 #include <ddfcam/gui/user_action.h>
-#include <ddfcam/io/part_loader.h>
+#include <ddfcam/io/mesh/part_loader.h>
 
 #include <QObject>
 #include <QSize>

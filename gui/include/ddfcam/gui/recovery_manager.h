@@ -2,7 +2,7 @@
 // ddfcam gui: autosave of the modified document and recovery of the sessions that crashed.
 #pragma once
 
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QDateTime>
 #include <QObject>

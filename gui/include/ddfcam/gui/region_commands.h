@@ -3,7 +3,7 @@
 #pragma once
 
 #include <ddfcam/gui/document_command.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <vector>
 

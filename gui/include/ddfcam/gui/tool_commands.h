@@ -3,7 +3,7 @@
 #pragma once
 
 #include <ddfcam/gui/document_command.h>
-#include <ddfcam/planning/tool.h>
+#include <ddfcam/planning/tools/tool.h>
 
 #include <vector>
 

@@ -3,7 +3,7 @@
 // colours, and markers of colliding poses.
 #pragma once
 
-#include <ddfcam/planning/tool.h>
+#include <ddfcam/planning/tools/tool.h>
 
 #include <Eigen/Geometry>
 

@@ -3,7 +3,7 @@
 // deviation along a path with the band). Conversion only.
 #pragma once
 
-#include <ddfcam/planning/error_map.h>
+#include <ddfcam/planning/inspection/error_map.h>
 
 #include <QString>
 

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <ddfcam/ddf/displacement_field.h>
-#include <ddfcam/planning/line_field.h>
+#include <ddfcam/planning/flow/line_field.h>
 
 #include <Eigen/Core>
 

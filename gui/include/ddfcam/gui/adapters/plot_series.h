@@ -2,7 +2,7 @@
 // ddfcam gui adapters: core statistics and series -> QCustomPlot plottables. Conversion only.
 #pragma once
 
-#include <ddfcam/planning/field_statistics.h>
+#include <ddfcam/planning/model/field_statistics.h>
 
 #include <QString>
 

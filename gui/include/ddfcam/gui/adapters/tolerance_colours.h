@@ -3,7 +3,7 @@
 // green = in tolerance, red = overcut) and its VTK lookup table.
 #pragma once
 
-#include <ddfcam/planning/error_map.h>
+#include <ddfcam/planning/inspection/error_map.h>
 
 #include <vtkSmartPointer.h>
 

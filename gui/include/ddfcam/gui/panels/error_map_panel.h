@@ -5,9 +5,9 @@
 #pragma once
 
 #include <ddfcam/gui/workbench.h>
-#include <ddfcam/planning/coverage.h>
-#include <ddfcam/planning/error_map.h>
-#include <ddfcam/planning/scallop_prediction.h>
+#include <ddfcam/planning/inspection/coverage.h>
+#include <ddfcam/planning/inspection/error_map.h>
+#include <ddfcam/planning/inspection/scallop_prediction.h>
 
 #include <optional>
 #include <vector>

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <ddfcam/gui/workbench.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <functional>
 

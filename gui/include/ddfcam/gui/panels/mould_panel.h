@@ -6,8 +6,8 @@
 #include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/gui/workbench.h>
 #include <ddfcam/length_unit.h>
-#include <ddfcam/planning/error_map.h>
-#include <ddfcam/planning/mould_study.h>
+#include <ddfcam/planning/inspection/error_map.h>
+#include <ddfcam/planning/mould/mould_study.h>
 
 #include <Eigen/Core>
 

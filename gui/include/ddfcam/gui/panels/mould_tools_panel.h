@@ -8,8 +8,8 @@
 #include <ddfcam/ddf/triangle_mesh.h>
 #include <ddfcam/gui/workbench.h>
 #include <ddfcam/length_unit.h>
-#include <ddfcam/planning/blend_function.h>
-#include <ddfcam/planning/springback_compensation.h>
+#include <ddfcam/planning/mould/blend_function.h>
+#include <ddfcam/planning/mould/springback_compensation.h>
 
 #include <Eigen/Core>
 

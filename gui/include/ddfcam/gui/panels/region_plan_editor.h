@@ -2,8 +2,8 @@
 // ddfcam gui: the editor of one region's planning choices (tool, flow field, spacing, feed).
 #pragma once
 
-#include <ddfcam/planning/region_plan.h>
-#include <ddfcam/planning/tool.h>
+#include <ddfcam/planning/model/region_plan.h>
+#include <ddfcam/planning/tools/tool.h>
 
 #include <QWidget>
 

@@ -3,8 +3,8 @@
 #pragma once
 
 #include <ddfcam/gui/workbench.h>
-#include <ddfcam/planning/project.h>
-#include <ddfcam/planning/region_editing.h>
+#include <ddfcam/planning/analysis/region_editing.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QObject>
 #include <QPointF>

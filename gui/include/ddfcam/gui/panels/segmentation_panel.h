@@ -5,7 +5,7 @@
 
 #include <ddfcam/gui/panels/region_view_tool.h>
 #include <ddfcam/gui/workbench.h>
-#include <ddfcam/planning/project.h>
+#include <ddfcam/planning/model/project.h>
 
 #include <QList>
 #include <QString>

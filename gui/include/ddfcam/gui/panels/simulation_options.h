@@ -2,8 +2,8 @@
 // ddfcam gui: the options of a grinding simulation shared by playback and the "Simulate" job.
 #pragma once
 
-#include <ddfcam/planning/grinding_simulation.h>
-#include <ddfcam/planning/preston_removal.h>
+#include <ddfcam/planning/simulation/grinding_simulation.h>
+#include <ddfcam/planning/simulation/preston_removal.h>
 
 #include <QWidget>
 

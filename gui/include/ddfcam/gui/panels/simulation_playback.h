@@ -4,7 +4,7 @@
 #pragma once
 
 #include <ddfcam/gui/workbench.h>
-#include <ddfcam/planning/grinding_simulation.h>
+#include <ddfcam/planning/simulation/grinding_simulation.h>
 
 #include <QElapsedTimer>
 #include <QString>

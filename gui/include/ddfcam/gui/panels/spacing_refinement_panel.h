@@ -3,8 +3,8 @@
 #pragma once
 
 #include <ddfcam/gui/workbench.h>
-#include <ddfcam/planning/flow_field_source.h>
-#include <ddfcam/planning/spacing_refinement.h>
+#include <ddfcam/planning/flow/flow_field_source.h>
+#include <ddfcam/planning/lines/spacing_refinement.h>
 
 #include <memory>
 

@@ -4,13 +4,13 @@
 
 #include <ddfcam/ddf/surface_sampling.h>
 #include <ddfcam/gui/workbench.h>
-#include <ddfcam/planning/flow_field.h>
-#include <ddfcam/planning/line_field.h>
-#include <ddfcam/planning/path_sampling.h>
+#include <ddfcam/planning/flow/flow_field.h>
+#include <ddfcam/planning/flow/line_field.h>
+#include <ddfcam/planning/lines/streamline.h>
+#include <ddfcam/planning/lines/streamline_path.h>
+#include <ddfcam/planning/model/region_plan.h>
 #include <ddfcam/planning/pipeline/region_planning.h>
-#include <ddfcam/planning/region_plan.h>
-#include <ddfcam/planning/streamline.h>
-#include <ddfcam/planning/streamline_path.h>
+#include <ddfcam/planning/placement/path_sampling.h>
 
 #include <QPointF>
 #include <cstdint>

@@ -2,7 +2,7 @@
 // ddfcam gui: a form editing every field of a planning::Tool, with an inline message line.
 #pragma once
 
-#include <ddfcam/planning/tool.h>
+#include <ddfcam/planning/tools/tool.h>
 
 #include <QString>
 #include <QWidget>

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <ddfcam/gui/workbench.h>
-#include <ddfcam/planning/tool.h>
+#include <ddfcam/planning/tools/tool.h>
 
 class QComboBox;
 class QListWidget;

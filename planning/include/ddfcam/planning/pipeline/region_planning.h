@@ -8,15 +8,15 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/surface_sampling.h>
-#include <ddfcam/planning/curvature.h>
-#include <ddfcam/planning/flow_field.h>
-#include <ddfcam/planning/line_field.h>
-#include <ddfcam/planning/path_linking.h>
-#include <ddfcam/planning/project.h>
-#include <ddfcam/planning/region_plan.h>
-#include <ddfcam/planning/streamline.h>
-#include <ddfcam/planning/streamline_path.h>
-#include <ddfcam/planning/tool.h>
+#include <ddfcam/planning/analysis/curvature.h>
+#include <ddfcam/planning/flow/flow_field.h>
+#include <ddfcam/planning/flow/line_field.h>
+#include <ddfcam/planning/lines/streamline.h>
+#include <ddfcam/planning/lines/streamline_path.h>
+#include <ddfcam/planning/model/project.h>
+#include <ddfcam/planning/model/region_plan.h>
+#include <ddfcam/planning/placement/path_linking.h>
+#include <ddfcam/planning/tools/tool.h>
 #include <ddfcam/progress.h>
 
 #include <cstdint>

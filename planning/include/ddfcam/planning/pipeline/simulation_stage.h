@@ -6,10 +6,10 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/triangle_mesh.h>
-#include <ddfcam/planning/penetration_correction.h>
-#include <ddfcam/planning/preston_removal.h>
-#include <ddfcam/planning/tool.h>
-#include <ddfcam/planning/tool_path.h>
+#include <ddfcam/planning/model/tool_path.h>
+#include <ddfcam/planning/placement/penetration_correction.h>
+#include <ddfcam/planning/simulation/preston_removal.h>
+#include <ddfcam/planning/tools/tool.h>
 
 #include <vector>
 
