@@ -145,6 +145,8 @@ std::vector<std::string> conversionRepairLines(const ConversionReport& r) {
         "dropped (repeated corner or zero area)");
   addIf(lines, r.duplicateFaces, "duplicate triangle", "duplicate triangles",
         "dropped (same corners as an earlier one)");
+  addIf(lines, r.backToBackFaces, "back-to-back triangle", "back-to-back triangles",
+        "removed in pairs (same corners facing opposite ways, a zero-thickness membrane)");
   addIf(lines, r.droppedFaces, "triangle", "triangles",
         "dropped that made the support non-manifold or flipped its orientation");
   addIf(lines, r.nonManifoldEdges, "non-manifold edge", "non-manifold edges",

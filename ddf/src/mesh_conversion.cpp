@@ -15,7 +15,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <set>
+#include <limits>
+#include <map>
 #include <string>
 #include <unordered_map>
 
@@ -124,12 +125,75 @@ std::array<int, 3> sortedCorners(std::array<int, 3> t) {
   return t;
 }
 
+/// Whether the corners of @p t run in ascending cyclic order (its orientation against the
+/// sorted corners): two triangles on the same corners face opposite ways when this differs.
+bool ascendingOrientation(const std::array<int, 3>& t) {
+  const int first = static_cast<int>(std::min_element(t.begin(), t.end()) - t.begin());
+  return t[(first + 1) % 3] < t[(first + 2) % 3];
+}
+
+/// Per undirected edge, the number of triangles of @p triangles on it whose @p keep is set.
+std::map<std::pair<int, int>, int> edgeFaceCounts(const std::vector<std::array<int, 3>>& triangles,
+                                                  const std::vector<char>& keep) {
+  std::map<std::pair<int, int>, int> count;
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+    for (int k = 0; keep[i] && k < 3; ++k) {
+      const int a = triangles[i][k], b = triangles[i][(k + 1) % 3];
+      ++count[{std::min(a, b), std::max(a, b)}];
+    }
+  return count;
+}
+
+/// Removes repeated triangles from @p out. A copy facing the same way as a kept one is a
+/// duplicate. A copy facing the other way makes a back-to-back pair, a zero-thickness fin or
+/// membrane as scanner zipper meshes have. Where the rest of the mesh has exactly one face on
+/// an edge of the pair, the surface needs one of them there and the first is kept; where it
+/// has none (the fin's free edge) or two or more on every edge, and two or more on at least
+/// one, both faces go: keeping one would leave three faces on an edge, so the manifold check
+/// would drop it or a neighbour and open a hole in the surface around it.
+void removeRepeats(Candidates& out, ConversionReport& report) {
+  std::map<std::array<int, 3>, std::pair<int, bool>> firstOf;  // sorted corners -> (index, facing)
+  std::vector<char> keep(out.triangles.size(), 1);
+  std::vector<std::pair<int, int>> pairs;
+  for (std::size_t i = 0; i < out.triangles.size(); ++i) {
+    const bool facing = ascendingOrientation(out.triangles[i]);
+    const auto [it, fresh] =
+        firstOf.try_emplace(sortedCorners(out.triangles[i]), static_cast<int>(i), facing);
+    if (fresh) continue;
+    if (it->second.second != facing && it->second.first >= 0) {
+      pairs.emplace_back(it->second.first, static_cast<int>(i));
+      it->second.first = -1;  // a third copy is a duplicate of one of the pair
+    } else {
+      keep[i] = 0, ++report.duplicateFaces;
+    }
+  }
+  const auto count = edgeFaceCounts(out.triangles, keep);
+  for (const auto& [first, second] : pairs) {
+    bool needed = false, extra = false;
+    for (int k = 0; k < 3; ++k) {
+      const int a = out.triangles[first][k], b = out.triangles[first][(k + 1) % 3];
+      const int others = count.at({std::min(a, b), std::max(a, b)}) - 2;
+      needed |= others == 1;
+      extra |= others >= 2;
+    }
+    keep[second] = 0;
+    if (extra && !needed)
+      keep[first] = 0, report.backToBackFaces += 2;
+    else
+      ++report.duplicateFaces;
+  }
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < keep.size(); ++i)
+    if (keep[i]) out.triangles[n] = out.triangles[i], out.source[n++] = out.source[i];
+  out.triangles.resize(n);
+  out.source.resize(n);
+}
+
 Candidates weldedCandidates(const TriangleMesh& mesh, const ConversionParams& params,
                             ConversionReport& report) {
   Candidates out;
   out.rep = weldVertices(mesh.vertices, weldTolerance(mesh, params));
   for (std::size_t i = 0; i < out.rep.size(); ++i) report.weldedVertices += out.rep[i] != int(i);
-  std::set<std::array<int, 3>> seen;
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const auto& t = mesh.triangles[f];
     const std::array<int, 3> w = {out.rep[t[0]], out.rep[t[1]], out.rep[t[2]]};
@@ -137,13 +201,10 @@ Candidates weldedCandidates(const TriangleMesh& mesh, const ConversionParams& pa
       ++report.degenerateFaces;
       continue;
     }
-    if (!seen.insert(sortedCorners(w)).second) {
-      ++report.duplicateFaces;
-      continue;
-    }
     out.triangles.push_back(w);
     out.source.push_back(static_cast<int>(f));
   }
+  removeRepeats(out, report);
   report.nonManifoldEdges = detail::countNonManifoldEdges(out.triangles);
   return out;
 }

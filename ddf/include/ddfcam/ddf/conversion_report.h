@@ -38,15 +38,20 @@ struct ConversionAccuracy {
 /// @brief Summary of one conversion, without the field: the repairs, what was dropped, the
 /// topology of the input and the check of the result against the three constraints.
 struct ConversionReport {
-  int inputVertices = 0;       ///< vertices of the input mesh
-  int inputTriangles = 0;      ///< triangles of the input mesh
-  int supportVertices = 0;     ///< vertices of the converted support
-  int supportFaces = 0;        ///< faces of the converted support
-  int weldedVertices = 0;      ///< input vertices merged into another one
-  int unusedVertices = 0;      ///< input vertices no input triangle refers to (dropped)
-  int orphanedVertices = 0;    ///< vertices all of whose triangles were dropped (dropped)
-  int degenerateFaces = 0;     ///< triangles dropped for a repeated vertex or zero area
-  int duplicateFaces = 0;      ///< triangles dropped for repeating an earlier one's corners
+  int inputVertices = 0;     ///< vertices of the input mesh
+  int inputTriangles = 0;    ///< triangles of the input mesh
+  int supportVertices = 0;   ///< vertices of the converted support
+  int supportFaces = 0;      ///< faces of the converted support
+  int weldedVertices = 0;    ///< input vertices merged into another one
+  int unusedVertices = 0;    ///< input vertices no input triangle refers to (dropped)
+  int orphanedVertices = 0;  ///< vertices all of whose triangles were dropped (dropped)
+  int degenerateFaces = 0;   ///< triangles dropped for a repeated vertex or zero area
+  int duplicateFaces = 0;    ///< triangles dropped for repeating an earlier one's corners
+  /// Triangles removed in back-to-back pairs: two faces on the same corners facing opposite
+  /// ways (a zero-thickness fin or membrane) that the surface does not need, i.e. no edge of
+  /// theirs has exactly one other face; both faces of each such pair go. A pair the surface
+  /// needs keeps its first face and counts the other as a duplicate.
+  int backToBackFaces = 0;
   int droppedFaces = 0;        ///< triangles dropped as non-manifold or inconsistently oriented
   int nonManifoldEdges = 0;    ///< edges of the welded input shared by more than two triangles
   int boundaryLoops = 0;       ///< boundary curves of the support: holes and open borders
