@@ -10,13 +10,12 @@
 #include "arguments.h"
 #include "commands.h"
 #include "console.h"
-#include "json_writer.h"
+#include "json_output.h"
 #include "mould_options.h"
 #include "run_warnings.h"
 #include "unit_options.h"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -27,12 +26,10 @@
 namespace ddfcam::cli {
 namespace {
 
-constexpr const char* kHelp =
-    "usage: ddfcam-cli compare MOULD FORMED [options]\n\n"
+constexpr const char* kDescription =
     "Compares the formed (deformed) surface FORMED with the mould (or target) surface MOULD\n"
-    "(.stl/.obj/.ply/.off/.vtp/.vtu, in --units): builds a DDF on the mould, represents the "
-    "formed\n"
-    "surface as its heights (split into a sequence of smaller deformations where the\n"
+    "(.stl/.obj/.ply/.off/.vtp/.vtu, in --units): builds a DDF on the mould, represents the\n"
+    "formed surface as its heights (split into a sequence of smaller deformations where the\n"
     "unique-projection property fails, fig. 9.5) and reports the signed deviation along the\n"
     "mould normal: > 0 short of the mould (blue), < 0 beyond it (red), inside the band green.\n"
     "Beside the statistics it reports their coverage: the share of the mould's area with a\n"
@@ -40,40 +37,43 @@ constexpr const char* kHelp =
     "statistics and counted; a sequence that stalls (splits carrying only slivers of the\n"
     "deformation) stops early and says what to change.\n"
     "Warns when the coverage is below --min-coverage, faces are unresolved or the sequence\n"
-    "stalled; with --strict any warning makes the exit code 3 (after writing the outputs).\n\n"
-    "options:\n"
-    "  -o, --output FILE     deviation map as VTK PolyData (.vtp): the mould's raster mesh with\n"
-    "                        'deviation' (mm), 'tolerance_class' (-1, 0, +1), 'deviation_vector'\n"
-    "  --csv FILE            deviation vectors, one row per raster point (x,y,z,dx,dy,dz,dev)\n"
-    "  --json FILE           statistics, stages, histogram and timings as JSON\n"
-    "  --units U             unit of MOULD and FORMED: mm, cm, m or in (default mm; the\n"
-    "                        outputs are in mm)\n"
-    "  --resolution M        raster resolution of the mould DDF (default 4)\n"
-    "  --tolerance T         tolerance band [-T, T], mm (default 0.5)\n"
-    "  --band LO,HI          tolerance band [LO, HI], mm, LO <= 0 <= HI (instead of --tolerance)\n"
-    "  --flip-normal         reverse the mould normal (and the sign of every deviation)\n"
-    "  --align none|best-fit alignment of FORMED onto MOULD (default none: as positioned)\n"
-    "  --max-stages N        most DDFs in the deformation sequence (default 12)\n"
-    "  --reach MM            length of the displacement vectors (default: from the distance)\n"
-    "  --min-coverage P      warn when the statistics cover less than P % of the mould's area\n"
-    "                        (default 50: a formed part and its mould overlap almost entirely)\n"
-    "  --strict              exit with code 3 when the run had any warning (the best-fit\n"
-    "                        note excepted)\n"
-    "  -h, --help            show this help\n";
+    "stalled; with --strict any warning makes the exit code 3 (after writing the outputs).";
 
-const std::array<OptionSpec, 13> kOptions = {{kUnitsOption,
-                                              {"output", 'o', true},
-                                              {"csv", '\0', true},
-                                              {"json", '\0', true},
-                                              {"resolution", '\0', true},
-                                              {"tolerance", '\0', true},
-                                              {"band", '\0', true},
-                                              {"flip-normal", '\0', false},
-                                              {"align", '\0', true},
-                                              {"max-stages", '\0', true},
-                                              {"reach", '\0', true},
-                                              {"min-coverage", '\0', true},
-                                              {"strict", '\0', false}}};
+Arguments options() {
+  Arguments args("compare", "compare MOULD FORMED [options]", kDescription);
+  args.positional("MOULD", "mould (or target) surface file");
+  args.positional("FORMED", "formed surface file");
+  args.option("-o,--output", "FILE",
+              "deviation map as VTK PolyData (.vtp): the mould's raster mesh with\n"
+              "'deviation' (mm), 'tolerance_class' (-1, 0, +1), 'deviation_vector'");
+  args.option("--csv", "FILE", "deviation vectors, one row per raster point (x,y,z,dx,dy,dz,dev)");
+  addMouldOptions(args, {.surfaces = "MOULD and FORMED",
+                         .written = "the outputs are in mm",
+                         .ddf = "the mould DDF",
+                         .reach = "length of the displacement vectors (default: from the distance)",
+                         .json = "statistics, stages, histogram and timings as JSON"});
+  args.option("--tolerance", "T", "tolerance band [-T, T], mm (default 0.5)")
+      ->check(positiveNumber());
+  args.option("--band", "LO,HI",
+              "tolerance band [LO, HI], mm, LO <= 0 <= HI (instead of --tolerance)");
+  args.flag("--flip-normal", "reverse the mould normal (and the sign of every deviation)");
+  args.option("--align", "none|best-fit", "alignment of FORMED onto MOULD (none: as positioned)")
+      ->check(oneOf({"none", "best-fit"}))
+      ->default_str("none");
+  args.option("--max-stages", "N", "most DDFs in the deformation sequence")
+      ->check(integerIn(1, 1000))
+      ->default_str(std::to_string(planning::ComparisonParams{}.sequence.maxStages));
+  addMinCoverageOption(args,
+                       "warn when the statistics cover less than P % of the mould's area\n"
+                       "(default 50: a formed part and its mould overlap almost entirely)");
+  args.flag("--strict",
+            "exit with code 3 when the run had any warning (the best-fit\nnote excepted)");
+  return args;
+}
+
+std::string help() {
+  return options().help();
+}
 
 struct CompareRun {
   planning::LoadedSurface mould, formed;
@@ -86,24 +86,23 @@ struct CompareRun {
 
 planning::ComparisonParams comparisonParams(const Arguments& args) {
   planning::ComparisonParams params;
-  params.resolution = args.integer("resolution", params.resolution, 2, 64);
+  params.resolution = args.integer("resolution", params.resolution);
   if (args.has("tolerance") && args.has("band"))
     throw UsageError("compare: give either --tolerance or --band, not both");
-  if (const auto t = args.positiveNumber("tolerance")) params.band = {-*t, *t};
+  if (const auto t = args.number("tolerance")) params.band = {-*t, *t};
   if (const auto band = args.value("band")) {
     const std::vector<double> v = parseNumberList(*band, 2, "band");
     if (v[0] > 0.0 || v[1] < 0.0) throw UsageError("--band: need LO <= 0 <= HI, got " + *band);
     params.band = {v[0], v[1]};
   }
   params.flipNormal = args.has("flip-normal");
-  params.sequence.maxStages = args.integer("max-stages", params.sequence.maxStages, 1, 1000);
-  if (const auto reach = args.positiveNumber("reach")) params.sequence.reachMm = *reach;
+  params.sequence.maxStages = args.integer("max-stages", params.sequence.maxStages);
+  if (const auto reach = args.number("reach")) params.sequence.reachMm = *reach;
   return params;
 }
 
 void align(const std::string& method, CompareRun& run) {
   if (method == "none") return;
-  if (method != "best-fit") throw UsageError("--align: expected none or best-fit, got " + method);
   const auto start = std::chrono::steady_clock::now();
   planning::BestFitParams params;
   params.progress = consoleProgress("aligning");
@@ -172,7 +171,7 @@ void warnAbout(CompareRun& run, double minCoveragePercent) {
   }
 }
 
-void writeHistogram(JsonWriter& json, const CompareRun& run) {
+JsonReport histogramJson(const CompareRun& run) {
   const planning::ErrorStatistics& s = run.result.statistics;
   const double pad = std::max(1e-9, 1e-6 * (std::abs(s.maxMm) + std::abs(s.minMm)));
   // Weighted by the mould's area, as the statistics are (stage 0's heights describe the formed
@@ -183,71 +182,78 @@ void writeHistogram(JsonWriter& json, const CompareRun& run) {
   const planning::AreaHistogram h =
       planning::errorHistogram(run.result.deviation, mould, 40, s.minMm - pad, s.maxMm + pad,
                                planning::resolvedFaces(run.result));
-  json.key("histogram").beginObject();
-  json.key("lower_mm").value(h.lowerMm).key("upper_mm").value(h.upperMm);
-  json.key("bin_width_mm").value(h.binWidthMm());
-  json.key("area_mm2").beginArray();
-  for (const double a : h.areaMm2) json.value(a);
-  json.endArray();
-  json.key("below_mm2").value(h.belowMm2).key("above_mm2").value(h.aboveMm2).endObject();
+  JsonReport json;
+  json["lower_mm"] = h.lowerMm;
+  json["upper_mm"] = h.upperMm;
+  json["bin_width_mm"] = h.binWidthMm();
+  json["area_mm2"] = h.areaMm2;
+  json["below_mm2"] = h.belowMm2;
+  json["above_mm2"] = h.aboveMm2;
+  return json;
 }
 
-void writeStatistics(JsonWriter& json, const planning::ErrorStatistics& s) {
-  json.key("statistics").beginObject();
-  json.key("max_mm").value(s.maxMm).key("min_mm").value(s.minMm);
-  json.key("mean_mm").value(s.meanMm).key("sigma_mm").value(sigmaOf(s));
-  json.key("rms_mm").value(s.rmsMm);
-  json.key("within_band_percent").value(s.inTolerancePercent);
-  json.key("short_percent").value(s.materialLeftPercent);
-  json.key("beyond_percent").value(s.overcutPercent);
-  json.key("area_mm2").value(s.areaMm2).key("points").value(s.points).endObject();
+JsonReport statisticsJson(const planning::ErrorStatistics& s) {
+  JsonReport json;
+  json["max_mm"] = s.maxMm;
+  json["min_mm"] = s.minMm;
+  json["mean_mm"] = s.meanMm;
+  json["sigma_mm"] = sigmaOf(s);
+  json["rms_mm"] = s.rmsMm;
+  json["within_band_percent"] = s.inTolerancePercent;
+  json["short_percent"] = s.materialLeftPercent;
+  json["beyond_percent"] = s.overcutPercent;
+  json["area_mm2"] = s.areaMm2;
+  json["points"] = s.points;
+  return json;
 }
 
-void writeCoverage(JsonWriter& json, const planning::ComparisonCoverage& c) {
-  json.key("coverage").beginObject();
-  json.key("coverage_percent").value(c.compared.percent());
-  json.key("compared_area_mm2").value(c.compared.coveredAreaMm2);
-  json.key("mould_area_mm2").value(c.compared.totalAreaMm2);
-  json.key("unresolved_area_mm2").value(c.unresolvedAreaMm2);
-  json.key("missing_area_mm2").value(c.missingAreaMm2).endObject();
+JsonReport coverageJson(const planning::ComparisonCoverage& c) {
+  JsonReport json;
+  json["coverage_percent"] = c.compared.percent();
+  json["compared_area_mm2"] = c.compared.coveredAreaMm2;
+  json["mould_area_mm2"] = c.compared.totalAreaMm2;
+  json["unresolved_area_mm2"] = c.unresolvedAreaMm2;
+  json["missing_area_mm2"] = c.missingAreaMm2;
+  return json;
 }
 
-void writeSequence(JsonWriter& json, const ddf::DeformationSequence& seq) {
-  json.key("stages").beginArray();
-  for (const ddf::DeformationStage& stage : seq.stages) {
-    json.beginObject().key("fraction").value(stage.fraction);
-    json.key("crossing_faces").value(stage.crossingFaces.size()).endObject();
+void writeSequence(JsonReport& json, const ddf::DeformationSequence& seq) {
+  JsonReport& stages = json["stages"] = JsonReport::array();
+  for (const ddf::DeformationStage& stage : seq.stages)
+    stages.push_back(
+        {{"fraction", stage.fraction}, {"crossing_faces", stage.crossingFaces.size()}});
+  json["crossing_faces"] = seq.crossingFaces.size();
+  json["unresolved_faces"] = seq.unresolvedFaces.size();
+  json["missing_points"] = seq.missingPoints;
+}
+
+JsonReport alignmentJson(const CompareRun& run) {
+  JsonReport json;
+  json["method"] = run.alignment ? "best-fit" : "none";
+  if (run.alignment) {
+    json["rms_before_mm"] = run.alignment->rmsBeforeMm;
+    json["rms_mm"] = run.alignment->rmsMm;
+    json["rotation_deg"] = planning::rotationAngleDeg(run.alignment->transform);
   }
-  json.endArray();
-  json.key("crossing_faces").value(seq.crossingFaces.size());
-  json.key("unresolved_faces").value(seq.unresolvedFaces.size());
-  json.key("missing_points").value(seq.missingPoints);
+  return json;
 }
 
 void writeJson(const Arguments& args, const CompareRun& run, const std::filesystem::path& file) {
-  JsonWriter json;
-  json.beginObject();
-  json.key("mould").value(run.mould.sourcePath).key("formed").value(run.formed.sourcePath);
-  json.key("resolution").value(run.result.sequence.stages.front().ddf.resolution());
-  json.key("band").beginObject().key("lower_mm").value(run.result.band.lowerMm);
-  json.key("upper_mm").value(run.result.band.upperMm).endObject();
-  json.key("flip_normal").value(args.has("flip-normal"));
-  json.key("alignment").beginObject().key("method").value(run.alignment ? "best-fit" : "none");
-  if (run.alignment) {
-    json.key("rms_before_mm").value(run.alignment->rmsBeforeMm);
-    json.key("rms_mm").value(run.alignment->rmsMm);
-    json.key("rotation_deg").value(planning::rotationAngleDeg(run.alignment->transform));
-  }
-  json.endObject();
-  writeStatistics(json, run.result.statistics);
-  writeCoverage(json, run.coverage);
+  JsonReport json;
+  json["mould"] = run.mould.sourcePath;
+  json["formed"] = run.formed.sourcePath;
+  json["resolution"] = run.result.sequence.stages.front().ddf.resolution();
+  json["band"] = {{"lower_mm", run.result.band.lowerMm}, {"upper_mm", run.result.band.upperMm}};
+  json["flip_normal"] = args.has("flip-normal");
+  json["alignment"] = alignmentJson(run);
+  json["statistics"] = statisticsJson(run.result.statistics);
+  json["coverage"] = coverageJson(run.coverage);
   writeSequence(json, run.result.sequence);
   run.warnings.write(json);
-  writeHistogram(json, run);
-  json.key("seconds").beginObject().key("load").value(run.loadSeconds);
-  json.key("align").value(run.alignSeconds).key("compare").value(run.compareSeconds).endObject();
-  json.endObject();
-  writeTextFile(json.str(), file, "compare");
+  json["histogram"] = histogramJson(run);
+  json["seconds"] = {
+      {"load", run.loadSeconds}, {"align", run.alignSeconds}, {"compare", run.compareSeconds}};
+  writeTextFile(jsonText(json), file, "compare");
 }
 
 void writeOutputs(const Arguments& args, const CompareRun& run) {
@@ -266,14 +272,13 @@ void writeOutputs(const Arguments& args, const CompareRun& run) {
 }
 
 int runCompare(std::span<const std::string> words) {
-  const Arguments args(words, kOptions, "compare");
+  Arguments args = options();
+  args.parse(words);
   args.expectPositionals(2, "MOULD FORMED");
   installLogSink();
   planning::ComparisonParams params = comparisonParams(args);
   const double minCoverage = minCoverageOption(args, planning::kLowComparisonCoveragePercent);
-  const std::string method = args.value("align").value_or("none");
-  if (method != "none" && method != "best-fit")
-    throw UsageError("--align: expected none or best-fit, got " + method);
+  const std::string method = *args.value("align");
   auto start = std::chrono::steady_clock::now();
   CompareRun run;
   const std::optional<ddfcam::LengthUnit> unit = unitOption(args);
@@ -299,6 +304,6 @@ int runCompare(std::span<const std::string> words) {
 
 const Command kCompareCommand{"compare",
                               "deviation of a formed surface from its mould: map, vectors, JSON",
-                              kHelp, &runCompare};
+                              &help, &runCompare};
 
 }  // namespace ddfcam::cli

@@ -9,13 +9,12 @@
 #include "arguments.h"
 #include "commands.h"
 #include "console.h"
-#include "json_writer.h"
+#include "json_output.h"
 #include "mould_options.h"
 #include "unit_options.h"
 
 #include <Eigen/Geometry>
 
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -27,9 +26,7 @@
 namespace ddfcam::cli {
 namespace {
 
-constexpr const char* kHelp =
-    "usage: ddfcam-cli compensate TARGET --formed F0 [F1 ...] [options]\n"
-    "       ddfcam-cli compensate TARGET --model-alpha A --calibrate-from F0 [options]\n\n"
+constexpr const char* kDescription =
     "Plans a mould that springs back onto TARGET (a surface file, in --units) by displacement\n"
     "adjustment on the heights of a DDF on TARGET: mould_{j+1} = mould_j - lambda (formed_j -\n"
     "TARGET), mould_0 = TARGET. With --formed, F0, F1, ... are the parts formed in mould_0,\n"
@@ -37,35 +34,42 @@ constexpr const char* kHelp =
     "next mould is planned from the last. With --model-alpha, a linear springback model\n"
     "S(C) = P + (1 - alpha)(C - P) calibrated so that mould_0 forms F0 replaces the forming and\n"
     "runs --iterations steps. Writes mould_<j>.stl per iteration and prints the max and RMS\n"
-    "deviation along the target normal per iteration.\n\n"
-    "options:\n"
-    "  --formed F [F2 ...]     formed parts of mould_0, mould_1, ... (files after TARGET)\n"
-    "  --model-alpha A         isotropic springback share alpha in (0, 1)\n"
-    "  --model-axes AX,AY,AZ   with --model-alpha: springback shares along x, y, z for the\n"
-    "                          forming steps (anisotropic model; alpha calibrates P)\n"
-    "  --calibrate-from F0     part formed in the target itself (required with the model)\n"
-    "  --lambda L              adjustment factor in (0, 10] (default 1)\n"
-    "  --iterations N          model steps (default 3)\n"
-    "  --out-dir DIR           where mould_<j>.stl go (default: the current directory)\n"
-    "  --json FILE             convergence per iteration (max, RMS) as JSON\n"
-    "  --units U               unit of TARGET and the formed parts: mm, cm, m or in (default\n"
-    "                          mm; the moulds are written in mm)\n"
-    "  --resolution M          raster resolution of the target DDF (default 4)\n"
-    "  --reach MM              length of the target DDF's vectors (default 5 % of the\n"
-    "                          bounding-box diagonal; mould heights beyond it are reported)\n"
-    "  -h, --help              show this help\n";
+    "deviation along the target normal per iteration.";
 
-const std::array<OptionSpec, 11> kOptions = {{kUnitsOption,
-                                              {"formed", '\0', true},
-                                              {"model-alpha", '\0', true},
-                                              {"model-axes", '\0', true},
-                                              {"calibrate-from", '\0', true},
-                                              {"lambda", '\0', true},
-                                              {"iterations", '\0', true},
-                                              {"out-dir", '\0', true},
-                                              {"json", '\0', true},
-                                              {"resolution", '\0', true},
-                                              {"reach", '\0', true}}};
+Arguments options() {
+  Arguments args(
+      "compensate",
+      "compensate TARGET --formed F0 [F1 ...] [options]\n"
+      "       ddfcam-cli compensate TARGET --model-alpha A --calibrate-from F0 [options]",
+      kDescription);
+  args.positional("TARGET", "target surface file");
+  args.positional("F1", "with --formed: the parts formed in mould_1, mould_2, ...", true);
+  args.option("--formed", "F [F2 ...]",
+              "formed parts of mould_0, mould_1, ... (files after TARGET)");
+  args.option("--model-alpha", "A", "isotropic springback share alpha in (0, 1)")
+      ->check(positiveNumber());
+  args.option("--model-axes", "AX,AY,AZ",
+              "with --model-alpha: springback shares along x, y, z for the\n"
+              "forming steps (anisotropic model; alpha calibrates P)");
+  args.option("--calibrate-from", "F0",
+              "part formed in the target itself (required with the model)");
+  args.option("--lambda", "L", "adjustment factor in (0, 10]")
+      ->check(positiveNumber())
+      ->default_str("1");
+  args.option("--iterations", "N", "model steps")->check(integerIn(1, 100))->default_str("3");
+  args.option("--out-dir", "DIR", "where mould_<j>.stl go (default: the current directory)");
+  addMouldOptions(args, {.surfaces = "TARGET and the formed parts",
+                         .written = "the moulds are written in mm",
+                         .ddf = "the target DDF",
+                         .reach = "length of the target DDF's vectors (default 5 % of the\n"
+                                  "bounding-box diagonal; mould heights beyond it are reported)",
+                         .json = "convergence per iteration (max, RMS) as JSON"});
+  return args;
+}
+
+std::string help() {
+  return options().help();
+}
 
 ddf::DisplacementField targetDdf(const ddf::TriangleMesh& mesh, int resolution,
                                  std::optional<double> reach) {
@@ -117,7 +121,7 @@ void runImported(const Arguments& args, planning::CompensationHistory& history, 
 
 planning::LinearSpringbackModel springbackModel(const Arguments& args,
                                                 const planning::CompensationHistory& history) {
-  const double alpha = *args.positiveNumber("model-alpha");
+  const double alpha = *args.number("model-alpha");
   const auto calibration = args.value("calibrate-from");
   if (!calibration) throw UsageError("compensate: --model-alpha needs --calibrate-from F0");
   planning::LinearSpringbackModel model = planning::calibrateSpringback(
@@ -131,7 +135,7 @@ planning::LinearSpringbackModel springbackModel(const Arguments& args,
 
 void runModel(const Arguments& args, planning::CompensationHistory& history, double lambda) {
   const planning::LinearSpringbackModel model = springbackModel(args, history);
-  const int steps = args.integer("iterations", 3, 1, 100);
+  const int steps = args.integer("iterations", 3);
   std::string source = "linear model alpha=" + *args.value("model-alpha");
   if (model.axisAlpha) source += " axes=" + *args.value("model-axes");
   for (int j = 0; j <= steps; ++j) {
@@ -146,19 +150,21 @@ void runModel(const Arguments& args, planning::CompensationHistory& history, dou
 
 void writeConvergence(const planning::CompensationHistory& history,
                       const std::filesystem::path& file, const std::string& mode) {
-  JsonWriter json;
-  json.beginObject().key("mode").value(mode);
-  json.key("iterations").beginArray();
+  JsonReport json;
+  json["mode"] = mode;
+  JsonReport& iterations = json["iterations"] = JsonReport::array();
   for (std::size_t j = 0; j < history.iterations.size(); ++j) {
     const planning::CompensationIteration& it = history.iterations[j];
-    json.beginObject().key("iteration").value(j).key("lambda").value(it.lambda);
-    json.key("max_mm").value(it.maxDeviationMm).key("rms_mm").value(it.rmsDeviationMm);
-    json.key("formed").value(it.formedSource);
-    json.key("points_outside_crust").value(it.pointsOutsideCrust);
-    json.key("mould").value("mould_" + std::to_string(j) + ".stl").endObject();
+    JsonReport& row = iterations.emplace_back();
+    row["iteration"] = j;
+    row["lambda"] = it.lambda;
+    row["max_mm"] = it.maxDeviationMm;
+    row["rms_mm"] = it.rmsDeviationMm;
+    row["formed"] = it.formedSource;
+    row["points_outside_crust"] = it.pointsOutsideCrust;
+    row["mould"] = "mould_" + std::to_string(j) + ".stl";
   }
-  json.endArray().endObject();
-  writeTextFile(json.str(), file, "compensate");
+  writeTextFile(jsonText(json), file, "compensate");
 }
 
 void writeMoulds(const planning::CompensationHistory& history, const std::filesystem::path& dir) {
@@ -171,7 +177,8 @@ void writeMoulds(const planning::CompensationHistory& history, const std::filesy
 }
 
 int runCompensate(std::span<const std::string> words) {
-  const Arguments args(words, kOptions, "compensate");
+  Arguments args = options();
+  args.parse(words);
   if (args.positionals().empty()) throw UsageError("compensate: TARGET is missing");
   const bool imported = args.has("formed");
   if (args.has("model-axes") && !args.has("model-alpha"))
@@ -181,13 +188,13 @@ int runCompensate(std::span<const std::string> words) {
   if (!imported && args.positionals().size() != 1)
     throw UsageError("compensate: extra files after TARGET need --formed");
   installLogSink();
-  const double lambda = args.positiveNumber("lambda").value_or(1.0);
-  const int resolution = args.integer("resolution", 4, 2, 64);
+  const double lambda = args.number("lambda").value_or(1.0);
+  const int resolution = args.integer("resolution", kMouldResolution);
   const auto start = std::chrono::steady_clock::now();
   const planning::LoadedSurface target =
       loadSurface(args.positionals()[0], "target", unitOption(args));
   planning::CompensationHistory history =
-      planning::startCompensation(targetDdf(target.mesh, resolution, args.positiveNumber("reach")));
+      planning::startCompensation(targetDdf(target.mesh, resolution, args.number("reach")));
   std::printf("compensate %s (m = %d, lambda %.4g)\n", target.name.c_str(), resolution, lambda);
   if (imported)
     runImported(args, history, lambda);
@@ -205,7 +212,7 @@ int runCompensate(std::span<const std::string> words) {
 }  // namespace
 
 const Command kCompensateCommand{"compensate",
-                                 "springback compensation: corrected moulds and convergence", kHelp,
+                                 "springback compensation: corrected moulds and convergence", &help,
                                  &runCompensate};
 
 }  // namespace ddfcam::cli

@@ -17,35 +17,40 @@
 namespace ddfcam::cli {
 namespace {
 
-const std::string kHelp =
-    std::string(
-        "usage: ddfcam-cli convert IN.(stl|obj|ply|off|step|stp|iges|igs) -o OUT.ddf [options]\n\n"
-        "Converts a triangle mesh or a CAD model (STEP, IGES; tessellated finely enough for the\n"
-        "tolerance) into a Discrete Displacement Field and writes it as .ddf. The support is the\n"
-        "input reduced by constrained edge contraction (ch. 6; --support input keeps the input\n"
-        "mesh; a reduced face never spans two CAD faces), the vectors pseudo-normals whose\n"
-        "lengths keep the crusts free of foldovers (sec. 4.4), the heights filled from the\n"
-        "input. Coordinates are read in --units (by default a CAD file's own unit, mm for\n"
-        "meshes).\n"
-        "It says what it repaired (welded vertices; unused, degenerate, duplicate and\n"
-        "non-manifold triangles dropped; holes and open borders; vector directions turned and\n"
-        "lengths shortened), how far the reduction went, m and the raster spacing, the distance\n"
-        "between the DDF surface and the input both ways, and whether the crust holds --stock.\n"
-        "Then it checks the result against the three DDF constraints as 'info' does. A result\n"
-        "that violates one, or whose crust cannot hold the stock, is not written: the command\n"
-        "says why and what to change and exits with code 3, unless --allow-invalid is given\n"
-        "(then OUT is written, the warnings stay). OUT records the input's unit and CAD faces.\n\n"
-        "options:\n"
-        "  -o, --output FILE          output .ddf file\n") +
-    kConversionOptionsHelp +
-    "  --allow-invalid            write OUT even if it is invalid or misses the stock (exit 0)\n"
-    "  -h, --help                 show this help\n";
+constexpr const char* kDescription =
+    "Converts a triangle mesh or a CAD model (STEP, IGES; tessellated finely enough for the\n"
+    "tolerance) into a Discrete Displacement Field and writes it as .ddf. The support is the\n"
+    "input reduced by constrained edge contraction (ch. 6; --support input keeps the input\n"
+    "mesh; a reduced face never spans two CAD faces), the vectors pseudo-normals whose\n"
+    "lengths keep the crusts free of foldovers (sec. 4.4), the heights filled from the\n"
+    "input. Coordinates are read in --units (by default a CAD file's own unit, mm for\n"
+    "meshes).\n"
+    "It says what it repaired (welded vertices; unused, degenerate, duplicate and\n"
+    "non-manifold triangles dropped; holes and open borders; vector directions turned and\n"
+    "lengths shortened), how far the reduction went, m and the raster spacing, the distance\n"
+    "between the DDF surface and the input both ways, and whether the crust holds --stock.\n"
+    "Then it checks the result against the three DDF constraints as 'info' does. A result\n"
+    "that violates one, or whose crust cannot hold the stock, is not written: the command\n"
+    "says why and what to change and exits with code 3, unless --allow-invalid is given\n"
+    "(then OUT is written, the warnings stay). OUT records the input's unit and CAD faces.";
+
+Arguments options() {
+  Arguments args("convert", "convert IN.(stl|obj|ply|off|step|stp|iges|igs) -o OUT.ddf [options]",
+                 kDescription);
+  args.positional("IN", "input mesh or CAD file");
+  args.option("-o,--output", "FILE", "output .ddf file");
+  addConversionOptions(args);
+  args.flag("--allow-invalid", "write OUT even if it is invalid or misses the stock (exit 0)");
+  return args;
+}
+
+std::string help() {
+  return options().help();
+}
 
 int runConvert(std::span<const std::string> words) {
-  std::vector<OptionSpec> specs = conversionOptionSpecs();
-  specs.push_back({"output", 'o', true});
-  specs.push_back({"allow-invalid", '\0', false});
-  const Arguments args(words, specs, "convert");
+  Arguments args = options();
+  args.parse(words);
   args.expectPositionals(1, "an input mesh or CAD file");
   const std::filesystem::path input = args.positionals()[0];
   const std::filesystem::path output = args.required("output");
@@ -83,7 +88,7 @@ int runConvert(std::span<const std::string> words) {
 
 }  // namespace
 
-const Command kConvertCommand{"convert", "convert a mesh or CAD file into a .ddf file",
-                              kHelp.c_str(), &runConvert};
+const Command kConvertCommand{"convert", "convert a mesh or CAD file into a .ddf file", &help,
+                              &runConvert};
 
 }  // namespace ddfcam::cli

@@ -29,25 +29,34 @@
 namespace ddfcam::cli {
 namespace {
 
-constexpr const char* kHelp =
-    "usage: ddfcam-cli curvature PART [-o OUT.vtp] [--csv OUT.csv] [--step D]\n\n"
+constexpr const char* kDescription =
     "Computes the principal curvatures and directions at every raster point of PART (a .ddf\n"
     "file, or a mesh or CAD file converted on its own support at m = 10) from the DDF's\n"
-    "parametric\n"
-    "form (dissertation sec. 8.2). Signs are seen from the tool (+v side): positive where the\n"
-    "surface bends away from the tool (convex), negative where it bends towards it.\n\n"
+    "parametric form (dissertation sec. 8.2). Signs are seen from the tool (+v side):\n"
+    "positive where the surface bends away from the tool (convex), negative where it bends\n"
+    "towards it.\n\n"
     "Writes the raster mesh as VTK XML PolyData with the point arrays k_max, k_min, mean,\n"
     "gaussian (1/mm, 1/mm^2), curvature_type (0 flat, 1 convex, 2 concave, 3 saddle),\n"
     "max_tool_radius (mm, 1e6 where unbounded), umbilic (1 where directions are meaningless)\n"
-    "and the vectors dir_max, dir_min; and, with --csv, one row per distinct raster point.\n\n"
-    "options:\n"
-    "  -o, --output FILE  output .vtp (default: PART with the extension .vtp)\n"
-    "  --csv FILE         also write per-point values as CSV (point_id, face, i, k, x, y, z,\n"
-    "                     k_max, k_min, mean, gaussian, dir_max_x..z, dir_min_x..z, umbilic)\n"
-    "  --step D           difference step in raster steps (default: automatic from m)\n"
-    "  --units U          unit of a mesh or CAD PART: mm, cm, m or in (default: the unit a\n"
-    "                     CAD file states, mm for meshes)\n"
-    "  -h, --help         show this help\n";
+    "and the vectors dir_max, dir_min; and, with --csv, one row per distinct raster point.";
+
+Arguments options() {
+  Arguments args("curvature", "curvature PART [-o OUT.vtp] [--csv OUT.csv] [--step D]",
+                 kDescription);
+  args.positional("PART", "input part: .ddf, mesh or CAD file");
+  args.option("-o,--output", "FILE", "output .vtp (default: PART with the extension .vtp)");
+  args.option("--csv", "FILE",
+              "also write per-point values as CSV (point_id, face, i, k, x, y, z,\n"
+              "k_max, k_min, mean, gaussian, dir_max_x..z, dir_min_x..z, umbilic)");
+  args.option("--step", "D", "difference step in raster steps (default: automatic from m)")
+      ->check(integerIn(1, 1 << 20));
+  addUnitsOption(args, "a mesh or CAD PART", "the unit a CAD file states, mm for meshes");
+  return args;
+}
+
+std::string help() {
+  return options().help();
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -223,14 +232,12 @@ std::filesystem::path outputPath(const Arguments& args, const std::filesystem::p
 }
 
 int runCurvature(std::span<const std::string> words) {
-  static const std::array<OptionSpec, 4> kSpecs = {kUnitsOption, OptionSpec{"output", 'o', true},
-                                                   OptionSpec{"csv", '\0', true},
-                                                   OptionSpec{"step", '\0', true}};
-  const Arguments args(words, kSpecs, "curvature");
+  Arguments args = options();
+  args.parse(words);
   args.expectPositionals(1, "an input part (.ddf or mesh)");
   const std::filesystem::path input = args.positionals()[0];
   const std::filesystem::path output = outputPath(args, input);
-  const int step = args.integer("step", 0, 1, 1 << 20);
+  const int step = args.integer("step", 0);
   const Clock::time_point start = Clock::now();
   io::LoadPartParams load;
   load.unit = unitOption(args);
@@ -263,6 +270,6 @@ int runCurvature(std::span<const std::string> words) {
 
 const Command kCurvatureCommand{"curvature",
                                 "principal curvatures of a part as a coloured .vtp and a CSV",
-                                kHelp, &runCurvature};
+                                &help, &runCurvature};
 
 }  // namespace ddfcam::cli

@@ -9,31 +9,37 @@
 #include "commands.h"
 #include "console.h"
 
-#include <array>
 #include <cstdio>
 
 namespace ddfcam::cli {
 namespace {
 
-constexpr const char* kHelp =
-    "usage: ddfcam-cli extract IN.ddf -o OUT.(stl|obj|ply|off) [--eps E]\n\n"
+constexpr const char* kDescription =
     "Writes the surface represented by the field as a triangle mesh: the full raster mesh\n"
     "((m-1)^2 triangles per support face) or, with --eps, an adaptive triangulation whose\n"
-    "distance to every raster surface point is at most E mm.\n\n"
-    "options:\n"
-    "  -o, --output FILE  output mesh; the format follows the extension\n"
-    "  --eps E            adaptive triangulation with error bound E mm (> 0)\n"
-    "  -h, --help         show this help\n";
+    "distance to every raster surface point is at most E mm.";
+
+Arguments options() {
+  Arguments args("extract", "extract IN.ddf -o OUT.(stl|obj|ply|off) [--eps E]", kDescription);
+  args.positional("IN.ddf", "input .ddf file");
+  args.option("-o,--output", "FILE", "output mesh; the format follows the extension");
+  args.option("--eps", "E", "adaptive triangulation with error bound E mm (> 0)")
+      ->check(positiveNumber());
+  return args;
+}
+
+std::string help() {
+  return options().help();
+}
 
 int runExtract(std::span<const std::string> words) {
-  static const std::array<OptionSpec, 2> kSpecs = {OptionSpec{"output", 'o', true},
-                                                   OptionSpec{"eps", '\0', true}};
-  const Arguments args(words, kSpecs, "extract");
+  Arguments args = options();
+  args.parse(words);
   args.expectPositionals(1, "an input .ddf file");
   const std::filesystem::path output = args.required("output");
   if (!io::meshFormatOf(output))
     throw UsageError("output " + output.string() + " must end in .stl, .obj, .ply or .off");
-  const std::optional<double> eps = args.positiveNumber("eps");
+  const std::optional<double> eps = args.number("eps");
   const ddf::DisplacementField field = io::readDdf(args.positionals()[0]);
   ddf::TriangleMesh mesh;
   if (eps) {
@@ -54,7 +60,7 @@ int runExtract(std::span<const std::string> words) {
 
 }  // namespace
 
-const Command kExtractCommand{"extract", "write the represented surface as a mesh file", kHelp,
+const Command kExtractCommand{"extract", "write the represented surface as a mesh file", &help,
                               &runExtract};
 
 }  // namespace ddfcam::cli

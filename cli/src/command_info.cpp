@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "conversion_options.h"
 #include "field_summary.h"
+#include "json_output.h"
 #include "part_facts.h"
 #include "unit_options.h"
 
@@ -19,28 +20,37 @@
 namespace ddfcam::cli {
 namespace {
 
-const std::string kHelp =
-    std::string(
-        "usage: ddfcam-cli info IN.(ddf|stl|obj|ply|off|step|stp|iges|igs) [options]\n\n"
-        "Prints the support size (vertices, faces), raster resolution m, raster spacing\n"
-        "(longest support edge / (m - 1)) and raster point counts, memory, height range (in\n"
-        "vector lengths), how far the +-1 crust reaches above and below the surface (smallest\n"
-        "and median, along the surface normal), support and surface bounding boxes (mm), the\n"
-        "unit the part's source file was read in, its CAD faces (count and names, for CAD\n"
-        "input), and the check of the three DDF constraints (chapter 3).\n"
-        "A mesh or CAD file is converted first, with the options below (as 'convert'), and its\n"
-        "conversion summary is printed too (not with --json).\n\n"
-        "options:\n"
-        "  --json                     print one JSON object instead of text\n") +
-    kConversionOptionsHelp + "  -h, --help                 show this help\n";
+constexpr const char* kDescription =
+    "Prints the support size (vertices, faces), raster resolution m, raster spacing\n"
+    "(longest support edge / (m - 1)) and raster point counts, memory, height range (in\n"
+    "vector lengths), how far the +-1 crust reaches above and below the surface (smallest\n"
+    "and median, along the surface normal), support and surface bounding boxes (mm), the\n"
+    "unit the part's source file was read in, its CAD faces (count and names, for CAD\n"
+    "input), and the check of the three DDF constraints (chapter 3).\n"
+    "A mesh or CAD file is converted first, with the options below (as 'convert'), and its\n"
+    "conversion summary is printed too (not with --json).";
 
-std::string validationJson(const ddf::ValidationReport& r) {
-  return "{\"ok\": " + std::string(r.ok() ? "true" : "false") +
-         ", \"constraint1\": " + std::to_string(r.count(1)) +
-         ", \"constraint2\": " + std::to_string(r.count(2)) +
-         ", \"constraint3\": " + std::to_string(r.count(3)) +
-         ", \"suppressed\": " + std::to_string(r.suppressedIssues) +
-         ", \"minCrustHeight\": " + jsonNumber(r.minCrustHeight) + "}";
+Arguments options() {
+  Arguments args("info", "info IN.(ddf|stl|obj|ply|off|step|stp|iges|igs) [options]", kDescription);
+  args.positional("IN", "input .ddf, mesh or CAD file");
+  args.flag("--json", "print one JSON object instead of text");
+  addConversionOptions(args);
+  return args;
+}
+
+std::string help() {
+  return options().help();
+}
+
+JsonReport validationJson(const ddf::ValidationReport& r) {
+  JsonReport json;
+  json["ok"] = r.ok();
+  json["constraint1"] = r.count(1);
+  json["constraint2"] = r.count(2);
+  json["constraint3"] = r.count(3);
+  json["suppressed"] = r.suppressedIssues;
+  json["minCrustHeight"] = r.minCrustHeight;
+  return json;
 }
 
 std::string validationText(const ddf::ValidationReport& r) {
@@ -60,7 +70,7 @@ struct InfoInput {
   ddf::DisplacementField field;
   PartFacts facts;
   std::string fileLine;  ///< "x.ddf: .ddf format version 2, 1234 bytes" (text)
-  std::string fileJson;  ///< the matching JSON members (with a trailing ",\n")
+  JsonReport fileJson;   ///< the matching JSON members, the first of the report
 };
 
 InfoInput readInput(const std::filesystem::path& input, const Arguments& args) {
@@ -79,10 +89,10 @@ InfoInput readInput(const std::filesystem::path& input, const Arguments& args) {
                   std::to_string(bytes) + " bytes" +
                   (design ? ", design mesh of " + std::to_string(design) + " triangles" : "") +
                   "\n";
-    in.fileJson = "  \"file\": " + jsonString(input.string()) +
-                  ",\n  \"fileBytes\": " + std::to_string(bytes) +
-                  ",\n  \"formatVersion\": " + std::to_string(version) +
-                  ",\n  \"designMeshTriangles\": " + std::to_string(design) + ",\n";
+    in.fileJson = {{"file", input.string()},
+                   {"fileBytes", bytes},
+                   {"formatVersion", version},
+                   {"designMeshTriangles", design}};
     return in;
   }
   io::LoadPartReport report;
@@ -99,22 +109,23 @@ InfoInput readInput(const std::filesystem::path& input, const Arguments& args) {
   in.facts.cadFaceOfSupportFace = std::move(report.cadFaceOfSupportFace);
   in.facts.cadFaceNames = std::move(report.cadFaceNames);
   in.fileLine = input.string() + ": converted, not stored\n";
-  in.fileJson = "  \"file\": " + jsonString(input.string()) + ",\n  \"converted\": true,\n";
+  in.fileJson = {{"file", input.string()}, {"converted", true}};
   return in;
 }
 
 int runInfo(std::span<const std::string> words) {
-  std::vector<OptionSpec> specs = conversionOptionSpecs();
-  specs.push_back({"json", '\0', false});
-  const Arguments args(words, specs, "info");
+  Arguments args = options();
+  args.parse(words);
   args.expectPositionals(1, "an input .ddf, mesh or CAD file");
   const InfoInput in = readInput(args.positionals()[0], args);
   const FieldSummary summary = summarize(in.field);
   const ddf::ValidationReport validation = ddf::validate(in.field);
   if (args.has("json")) {
-    std::printf("{\n%s%s,\n%s,\n  \"validation\": %s\n}\n", in.fileJson.c_str(),
-                summaryJsonMembers(summary).c_str(), partFactsJsonMembers(in.facts).c_str(),
-                validationJson(validation).c_str());
+    JsonReport json = in.fileJson;
+    writeSummary(json, summary);
+    writePartFacts(json, in.facts);
+    json["validation"] = validationJson(validation);
+    std::printf("%s", jsonText(json).c_str());
   } else {
     std::printf("%s%s%s%s", in.fileLine.c_str(), summaryText(summary).c_str(),
                 partFactsText(in.facts).c_str(), validationText(validation).c_str());
@@ -124,7 +135,7 @@ int runInfo(std::span<const std::string> words) {
 
 }  // namespace
 
-const Command kInfoCommand{"info", "print the key numbers of a .ddf, mesh or CAD file",
-                           kHelp.c_str(), &runInfo};
+const Command kInfoCommand{"info", "print the key numbers of a .ddf, mesh or CAD file", &help,
+                           &runInfo};
 
 }  // namespace ddfcam::cli

@@ -29,52 +29,63 @@
 namespace ddfcam::cli {
 namespace {
 
-constexpr const char* kHelp =
-    "usage: ddfcam-cli plan PART -o PATHS.csv [options]\n\n"
+constexpr const char* kDescription =
     "Plans streamline tool paths over the whole of PART (a .ddf file, a mesh or CAD file\n"
     "converted on its own support at m = 10, or 'demo' for the built-in demo part):\n"
-    "curvature, flow field,\n"
-    "lines SPACING apart, optional smoothing and fairing, tool poses, linking; writes the linked\n"
-    "program as a tool-path CSV (columns path, point, x y z mm, tool axis i j k, surface normal,\n"
-    "feed mm/min, move cut|link|rapid; path = move index) and prints a summary.\n\n"
-    "options:\n"
-    "  -o, --output FILE        output CSV (required)\n"
-    "  --units U                unit of a mesh or CAD PART: mm, cm, m or in (default: the\n"
-    "                           unit a CAD file states, mm for meshes)\n"
-    "  --field kmax|kmin|fixed  raw flow direction (default kmax)\n"
-    "  --direction X,Y,Z        direction of --field fixed, part frame (default 1,0,0)\n"
-    "  --no-smooth              use the raw field (default: smoothed, weight 0.02)\n"
-    "  --method rk4|walk|continuous  streamline tracing (default rk4)\n"
-    "  --seeding transverse|even     seeds along one transverse line through the centre, or\n"
-    "                           evenly spaced lines (Jobard-Lefer; rk4 only) (default: even\n"
-    "                           with rk4, transverse with walk and continuous)\n"
-    "  --spacing MM             distance between lines (default: bounding-box diagonal / 40);\n"
-    "                           every line stops after 4 bounding-box diagonals\n"
-    "  --scallop MM             instead of --spacing: largest scallop height between lines; the\n"
-    "                           spacing follows the curvature across the feed (needs --tool\n"
-    "                           ball and even seeding; a straight roll needs --spacing)\n"
-    "  --smooth-window K        moving average of half window K, kept on the surface (default 0)\n"
-    "  --fair                   fair every line (bending energy, 0.05 mm deviation)\n"
-    "  --linking zigzag|one-way order of the lines (default zigzag); links up to 2 spacings\n"
-    "                           long stay on the surface, longer ones lift by 1 mm (by the\n"
-    "                           bounding-box diagonal / 20 on smaller parts)\n"
-    "  --point contact|reference  x y z columns: contact point or tool centre (default contact)\n"
-    "  --tool KIND              tool shape: roll, ball (bare sphere), ball_end, flat_end, torus,\n"
-    "                           belt_wheel (or a tool-library key such as torus_cutter)\n"
-    "                           (default roll); wheels are 2 radius wide, cutters' flutes 2\n"
-    "                           radius long\n"
-    "  --radius MM              tool radius (default 5)\n"
-    "  --corner-radius MM       corner radius of torus (default radius / 4) or rim radius of\n"
-    "                           roll and belt_wheel (default 0)\n"
-    "  --lead DEG, --tilt DEG   lead angle (axis towards the feed) and tilt angle (about the\n"
-    "                           feed), |angle| < 90 (default 0; negative: --lead=-5)\n"
-    "  --tolerance MM           resample the lines along the feed at the step that keeps the\n"
-    "                           feed chord error and the cusp between poses below MM (bounded\n"
-    "                           by the raster spacing) (default: a pose at every line point)\n"
-    "  --step MM                resample at this fixed step instead (overrides the tolerance)\n"
-    "  --feed MM_PER_MIN        feed rate (default 1000)\n"
-    "  --decimals N             digits after the decimal point in the CSV (default 6)\n"
-    "  -h, --help               show this help\n";
+    "curvature, flow field, lines SPACING apart, optional smoothing and fairing, tool poses,\n"
+    "linking; writes the linked program as a tool-path CSV (columns path, point, x y z mm,\n"
+    "tool axis i j k, surface normal, feed mm/min, move cut|link|rapid; path = move index)\n"
+    "and prints a summary.";
+
+/// The options of the lines: flow field, tracing, seeding, spacing, smoothing, linking.
+void addLineOptions(Arguments& args) {
+  args.option("--field", "kmax|kmin|fixed", "raw flow direction")->default_str("kmax");
+  args.option("--direction", "X,Y,Z", "direction of --field fixed, part frame")
+      ->default_str("1,0,0");
+  args.flag("--no-smooth", "use the raw field (default: smoothed, weight 0.02)");
+  args.option("--method", "rk4|walk|continuous", "streamline tracing")->default_str("rk4");
+  args.option("--seeding", "transverse|even",
+              "seeds along one transverse line through the centre, or\n"
+              "evenly spaced lines (Jobard-Lefer; rk4 only) (default: even\n"
+              "with rk4, transverse with walk and continuous)");
+  args.option("--spacing", "MM",
+              "distance between lines (default: bounding-box diagonal / 40);\n"
+              "every line stops after 4 bounding-box diagonals")
+      ->check(positiveNumber());
+  args.option("--scallop", "MM",
+              "instead of --spacing: largest scallop height between lines; the\n"
+              "spacing follows the curvature across the feed (needs --tool\n"
+              "ball and even seeding; a straight roll needs --spacing)")
+      ->check(positiveNumber());
+  args.option("--smooth-window", "K", "moving average of half window K, kept on the surface")
+      ->check(integerIn(0, 1000))
+      ->default_str("0");
+  args.flag("--fair", "fair every line (bending energy, 0.05 mm deviation)");
+  args.option("--linking", "zigzag|one-way",
+              "order of the lines (default zigzag); links up to 2 spacings\n"
+              "long stay on the surface, longer ones lift by 1 mm (by the\n"
+              "bounding-box diagonal / 20 on smaller parts)");
+}
+
+Arguments options() {
+  Arguments args("plan", "plan PART -o PATHS.csv [options]", kDescription);
+  args.positional("PART", "input part: .ddf, mesh or CAD file, or 'demo'");
+  args.option("-o,--output", "FILE", "output CSV (required)");
+  addUnitsOption(args, "a mesh or CAD PART", "the unit a CAD file states, mm for meshes");
+  addLineOptions(args);
+  args.option("--point", "contact|reference", "x y z columns: contact point or tool centre")
+      ->default_str("contact");
+  addPlanToolOptions(args);
+  args.option("--feed", "MM_PER_MIN", "feed rate")->check(positiveNumber())->default_str("1000");
+  args.option("--decimals", "N", "digits after the decimal point in the CSV")
+      ->check(integerIn(0, 17))
+      ->default_str("6");
+  return args;
+}
+
+std::string help() {
+  return options().help();
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -95,7 +106,7 @@ struct PlanOptions {
   int smoothWindow = 0;
   bool fair = false;
   planning::LinkingOrder linking = planning::LinkingOrder::ZigZag;
-  io::ClPointKind point = io::ClPointKind::Contact;
+  planning::ClPointKind point = planning::ClPointKind::Contact;
   PlanTool tool;  ///< tool, placement and sampling along the lines
   double feedMmPerMin = 1000.0;
   int decimals = 6;
@@ -138,10 +149,10 @@ void parseField(const Arguments& args, PlanOptions& o) {
       planning::FlowFieldSource::MaxCurvatureDirection,
       planning::FlowFieldSource::MinCurvatureDirection, planning::FlowFieldSource::FixedDirection};
   o.field.source = kSources[choice(args, "field", kFields, 0)];
-  if (const auto d = args.value("direction")) {
+  if (args.has("direction")) {
     if (o.field.source != planning::FlowFieldSource::FixedDirection)
       throw UsageError("--direction needs --field fixed");
-    o.field.fixedDirection = parseDirection(*d);
+    o.field.fixedDirection = parseDirection(*args.value("direction"));
   }
   o.field.smoothing = !args.has("no-smooth");
 }
@@ -161,9 +172,9 @@ void parseLines(const Arguments& args, PlanOptions& o) {
   if (o.seeding == planning::LineSeeding::Coverage && o.method != planning::StreamlineMethod::Rk4)
     throw UsageError("--method " + *args.value("method") +
                      " is not available with --seeding even (it traces with rk4 only)");
-  o.spacingMm = args.positiveNumber("spacing");
-  o.scallopMm = args.positiveNumber("scallop");
-  o.smoothWindow = args.integer("smooth-window", 0, 0, 1000);
+  o.spacingMm = args.number("spacing");
+  o.scallopMm = args.number("scallop");
+  o.smoothWindow = args.integer("smooth-window", 0);
   o.fair = args.has("fair");
   static constexpr std::array<const char*, 2> kLinkings = {"zigzag", "one-way"};
   o.linking = choice(args, "linking", kLinkings, 0) == 0 ? planning::LinkingOrder::ZigZag
@@ -172,11 +183,11 @@ void parseLines(const Arguments& args, PlanOptions& o) {
 
 void parseOutput(const Arguments& args, PlanOptions& o) {
   static constexpr std::array<const char*, 2> kPoints = {"contact", "reference"};
-  o.point = choice(args, "point", kPoints, 0) == 0 ? io::ClPointKind::Contact
-                                                   : io::ClPointKind::ToolReference;
+  o.point = choice(args, "point", kPoints, 0) == 0 ? planning::ClPointKind::Contact
+                                                   : planning::ClPointKind::ToolReference;
   o.tool = parsePlanTool(args);
-  o.feedMmPerMin = args.positiveNumber("feed").value_or(1000.0);
-  o.decimals = args.integer("decimals", 6, 0, 17);
+  o.feedMmPerMin = args.number("feed").value_or(1000.0);
+  o.decimals = args.integer("decimals", 6);
 }
 
 void checkScallop(const PlanOptions& o) {
@@ -195,29 +206,8 @@ void checkScallop(const PlanOptions& o) {
 }
 
 PlanOptions parseOptions(std::span<const std::string> words) {
-  static const std::array<OptionSpec, 22> kSpecs = {kUnitsOption,
-                                                    OptionSpec{"output", 'o', true},
-                                                    OptionSpec{"field", '\0', true},
-                                                    OptionSpec{"direction", '\0', true},
-                                                    OptionSpec{"no-smooth", '\0', false},
-                                                    OptionSpec{"method", '\0', true},
-                                                    OptionSpec{"seeding", '\0', true},
-                                                    OptionSpec{"spacing", '\0', true},
-                                                    OptionSpec{"smooth-window", '\0', true},
-                                                    OptionSpec{"fair", '\0', false},
-                                                    OptionSpec{"linking", '\0', true},
-                                                    OptionSpec{"point", '\0', true},
-                                                    OptionSpec{"tool", '\0', true},
-                                                    OptionSpec{"radius", '\0', true},
-                                                    OptionSpec{"feed", '\0', true},
-                                                    OptionSpec{"decimals", '\0', true},
-                                                    OptionSpec{"scallop", '\0', true},
-                                                    OptionSpec{"corner-radius", '\0', true},
-                                                    OptionSpec{"lead", '\0', true},
-                                                    OptionSpec{"tilt", '\0', true},
-                                                    OptionSpec{"tolerance", '\0', true},
-                                                    OptionSpec{"step", '\0', true}};
-  const Arguments args(words, kSpecs, "plan");
+  Arguments args = options();
+  args.parse(words);
   args.expectPositionals(1, "an input part (.ddf, mesh or 'demo')");
   PlanOptions o;
   o.input = args.positionals()[0];
@@ -359,8 +349,8 @@ int runPlan(std::span<const std::string> words) {
   const PlacedProgram program =
       placeAndLink(part, lines, o.tool, o.feedMmPerMin, planning::linkingParamsOf(plan, linking));
   const planning::LinkedPaths& linked = program.linked;
-  const io::ClProgram table =
-      io::clProgramFromLinked(linked, program.path, o.tool.tool, o.point, program.normals);
+  const planning::ClProgram table =
+      planning::clProgramFromLinked(linked, program.path, o.tool.tool, o.point, program.normals);
   io::writeToolPathCsv(table, o.output, {.decimals = o.decimals});
   t.paths = msSince(start);
   printSummary(o, linked, table.points.size(), spacing, t);
@@ -370,7 +360,7 @@ int runPlan(std::span<const std::string> words) {
 
 }  // namespace
 
-const Command kPlanCommand{"plan", "streamline tool paths over a part, linked, as CSV", kHelp,
+const Command kPlanCommand{"plan", "streamline tool paths over a part, linked, as CSV", &help,
                            &runPlan};
 
 }  // namespace ddfcam::cli

@@ -8,7 +8,6 @@
 #include "job_runner.h"
 #include "job_spec.h"
 
-#include <array>
 #include <chrono>
 #include <cstdio>
 
@@ -16,8 +15,7 @@ namespace ddfcam::cli {
 
 namespace {
 
-constexpr const char* kHelp =
-    "usage: ddfcam-cli run JOB.json [--out DIR] [--no-timings]\n\n"
+constexpr const char* kDescription =
     "Runs the batch job JOB.json headless: loads the part (a file or \"demo\"), computes the\n"
     "curvature, segments the part into regions, plans every region (flow field, seeding or\n"
     "spacing refinement, tool placement), simulates the grinding, computes the error map and\n"
@@ -25,16 +23,24 @@ constexpr const char* kHelp =
     "the error map (.vtp), a report (JSON) and, with a display, screenshots rendered by the\n"
     "workbench. One line per stage with its time goes to stderr. Relative input paths in the job\n"
     "resolve against the job file's directory; outputs too unless --out is given. The job file\n"
-    "format is described in docs/batch_jobs.md.\n\n"
-    "options:\n"
-    "  --out DIR      directory of the outputs, created if needed\n"
-    "  --no-timings   leave the \"timings\" object out of the report (byte-identical reports)\n"
-    "  -h, --help     show this help\n";
+    "format is described in docs/batch_jobs.md.";
+
+Arguments options() {
+  Arguments args("run", "run JOB.json [--out DIR] [--no-timings]", kDescription);
+  args.positional("JOB.json", "batch job file (JSON)");
+  args.option("--out", "DIR", "directory of the outputs, created if needed");
+  args.flag("--no-timings",
+            "leave the \"timings\" object out of the report (byte-identical reports)");
+  return args;
+}
+
+std::string help() {
+  return options().help();
+}
 
 int runRun(std::span<const std::string> words) {
-  static const std::array<OptionSpec, 2> kSpecs = {OptionSpec{"out", '\0', true},
-                                                   OptionSpec{"no-timings", '\0', false}};
-  const Arguments args(words, kSpecs, "run");
+  Arguments args = options();
+  args.parse(words);
   args.expectPositionals(1, "a job file (JSON)");
   std::optional<std::filesystem::path> out;
   if (const auto dir = args.value("out")) out = std::filesystem::absolute(*dir);
@@ -65,6 +71,6 @@ int runJobAndSummarize(const JobSpec& spec, bool timings) {
   return 0;
 }
 
-const Command kRunCommand{"run", "run a batch job (JSON): plan, simulate, export", kHelp, &runRun};
+const Command kRunCommand{"run", "run a batch job (JSON): plan, simulate, export", &help, &runRun};
 
 }  // namespace ddfcam::cli

@@ -7,11 +7,12 @@
 
 namespace ddfcam::cli {
 
-/// @brief A subcommand: name, one-line summary, full help text and entry point.
+/// @brief A subcommand: name, one-line summary, help text and entry point.
 struct Command {
   const char* name;
   const char* summary;
-  const char* help;
+  /// The --help text, generated from the command's option table.
+  std::string (*help)();
   /// Runs the command; throws ddfcam::Error (UsageError for bad arguments) on failure.
   int (*run)(std::span<const std::string> args);
 };

@@ -12,53 +12,57 @@
 
 namespace ddfcam::cli {
 
-const char* const kConversionOptionsHelp =
-    "  --units U                  unit of the input's coordinates: mm, cm, m or in (default:\n"
-    "                             the unit a STEP/IGES file states, mm for meshes; a part\n"
-    "                             under 1 or over 10,000 units across draws a warning)\n"
-    "  --support reduced|input    support of the DDF: the input reduced by edge contraction\n"
-    "                             under the constraints of ch. 6 (default), or the input mesh\n"
-    "  --resolution M             raster resolution: points per support edge, 2..1024\n"
-    "                             (default 10; the first try of --tolerance)\n"
-    "  --tolerance MM             choose m so that the DDF surface lies within MM of the input,\n"
-    "                             measured both ways on sample points\n"
-    "  --raster-spacing MM        choose the smallest m whose raster spacing on the longest\n"
-    "                             support edge is at most MM (not with --tolerance)\n"
-    "  --stock MM                 fit the crust to hold a stock allowance of MM above the\n"
-    "                             surface; if it cannot, say where and the largest allowance\n"
-    "  --weld-tolerance MM        weld vertices closer than this (default: 1e-9 x the\n"
-    "                             bounding-box diagonal, at least 1e-6 mm)\n"
-    "  --max-vector-length MM     longest displacement vector (default: the mean edge length)\n";
-
-std::vector<OptionSpec> conversionOptionSpecs() {
-  return {kUnitsOption,
-          {"support", '\0', true},
-          {"resolution", '\0', true},
-          {"tolerance", '\0', true},
-          {"raster-spacing", '\0', true},
-          {"stock", '\0', true},
-          {"weld-tolerance", '\0', true},
-          {"max-vector-length", '\0', true}};
+void addConversionOptions(Arguments& args) {
+  addUnitsOption(args, "the input's coordinates",
+                 "the unit a STEP/IGES file states, mm for meshes;\na part under 1 or over "
+                 "10,000 units across draws a warning");
+  args.option("--support", "reduced|input",
+              "support of the DDF: the input reduced by edge contraction\nunder the constraints "
+              "of ch. 6, or the input mesh")
+      ->check(oneOf({"reduced", "input"}))
+      ->default_str("reduced");
+  args.option("--resolution", "M",
+              "raster resolution: points per support edge, 2..1024\n(the first try of "
+              "--tolerance)")
+      ->check(integerIn(2, 1024))
+      ->default_str(std::to_string(ddf::ConversionParams{}.resolution));
+  args.option("--tolerance", "MM",
+              "choose m so that the DDF surface lies within MM of the input,\nmeasured both ways "
+              "on sample points")
+      ->check(positiveNumber());
+  args.option("--raster-spacing", "MM",
+              "choose the smallest m whose raster spacing on the longest\nsupport edge is at most "
+              "MM (not with --tolerance)")
+      ->check(positiveNumber());
+  args.option("--stock", "MM",
+              "fit the crust to hold a stock allowance of MM above the\nsurface; if it cannot, "
+              "say where and the largest allowance")
+      ->check(positiveNumber());
+  args.option("--weld-tolerance", "MM",
+              "weld vertices closer than this (default: 1e-9 x the\nbounding-box diagonal, at "
+              "least 1e-6 mm)")
+      ->check(positiveNumber());
+  args.option("--max-vector-length", "MM",
+              "longest displacement vector (default: the mean edge length)")
+      ->check(positiveNumber());
 }
 
 io::LoadPartParams conversionParams(const Arguments& args) {
   io::LoadPartParams params;
   ddf::ConversionParams& c = params.conversion;
   params.unit = unitOption(args);
-  c.resolution = args.integer("resolution", c.resolution, 2, 1024);
-  const std::string support = args.value("support").value_or("reduced");
-  if (support != "reduced" && support != "input")
-    throw UsageError("--support expects reduced or input, got '" + support + "'");
-  c.support = support == "input" ? ddf::SupportChoice::Input : ddf::SupportChoice::Reduced;
+  c.resolution = args.integer("resolution", c.resolution);
+  c.support =
+      args.value("support") == "input" ? ddf::SupportChoice::Input : ddf::SupportChoice::Reduced;
   if (args.has("tolerance") && args.has("raster-spacing"))
     throw UsageError(
         "--tolerance and --raster-spacing exclude each other (a tolerance chooses "
         "the spacing)");
-  c.toleranceMm = args.positiveNumber("tolerance").value_or(0.0);
-  c.rasterSpacingMm = args.positiveNumber("raster-spacing").value_or(0.0);
-  c.stockMm = args.positiveNumber("stock").value_or(0.0);
-  if (const auto tol = args.positiveNumber("weld-tolerance")) c.weldToleranceMm = *tol;
-  if (const auto length = args.positiveNumber("max-vector-length")) c.lengths.maxLengthMm = *length;
+  c.toleranceMm = args.number("tolerance").value_or(0.0);
+  c.rasterSpacingMm = args.number("raster-spacing").value_or(0.0);
+  c.stockMm = args.number("stock").value_or(0.0);
+  if (const auto tol = args.number("weld-tolerance")) c.weldToleranceMm = *tol;
+  if (const auto length = args.number("max-vector-length")) c.lengths.maxLengthMm = *length;
   return params;
 }
 

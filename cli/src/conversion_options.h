@@ -9,7 +9,6 @@
 #include "arguments.h"
 
 #include <filesystem>
-#include <vector>
 
 namespace ddfcam::cli {
 
@@ -17,17 +16,13 @@ namespace ddfcam::cli {
 /// cannot hold the requested stock.
 inline constexpr int kInvalidResultExitCode = 3;
 
-/// @brief The options conversionParams() reads: --units, --resolution, --weld-tolerance,
-/// --max-vector-length, --support, --tolerance, --raster-spacing, --stock.
-std::vector<OptionSpec> conversionOptionSpecs();
-
-/// @brief Help text of the options of conversionOptionSpecs(), one block, ending in "\n".
-extern const char* const kConversionOptionsHelp;
+/// @brief Adds the options conversionParams() reads to @p args: --units, --support,
+/// --resolution, --tolerance, --raster-spacing, --stock, --weld-tolerance, --max-vector-length.
+void addConversionOptions(Arguments& args);
 
 /// @brief Conversion parameters from the command line (support default Reduced, as the import
 /// dialog; m default 10).
-/// @throws UsageError for a bad value, an unknown --support, or --tolerance together with
-/// --raster-spacing.
+/// @throws UsageError for --tolerance together with --raster-spacing.
 io::LoadPartParams conversionParams(const Arguments& args);
 
 /// @brief Prints what reading and converting @p input did: sizes, unit, repairs, the summary

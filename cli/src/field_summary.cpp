@@ -4,7 +4,6 @@
 
 #include "console.h"
 
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -23,18 +22,12 @@ std::string vecText(const ddf::Vec3& v) {
   return text;
 }
 
-std::string jsonVec(const ddf::Vec3& v) {
-  std::string out = "[";  // built piecewise: "lit" + string trips GCC 12's -Wrestrict
-  out += jsonNumber(v.x());
-  out += ", ";
-  out += jsonNumber(v.y());
-  out += ", ";
-  out += jsonNumber(v.z());
-  return out + "]";
+JsonReport jsonVec(const ddf::Vec3& v) {
+  return {v.x(), v.y(), v.z()};
 }
 
-std::string jsonBox(const std::array<ddf::Vec3, 2>& box) {
-  return "{\"min\": " + jsonVec(box[0]) + ", \"max\": " + jsonVec(box[1]) + "}";
+JsonReport jsonBox(const std::array<ddf::Vec3, 2>& box) {
+  return {{"min", jsonVec(box[0])}, {"max", jsonVec(box[1])}};
 }
 
 }  // namespace
@@ -91,50 +84,20 @@ std::string summaryText(const FieldSummary& s) {
   return text;
 }
 
-std::string summaryJsonMembers(const FieldSummary& s) {
-  std::string out;
-  const auto member = [&](const char* key, const std::string& value) {
-    if (!out.empty()) out += ",\n";
-    out += "  \"" + std::string(key) + "\": " + value;
-  };
-  member("vertices", std::to_string(s.vertices));
-  member("faces", std::to_string(s.faces));
-  member("resolution", std::to_string(s.resolution));
-  member("pointsPerFace", std::to_string(s.pointsPerFace));
-  member("storedHeights", std::to_string(s.storedHeights));
-  member("rasterPoints", std::to_string(s.rasterPoints));
-  member("memoryBytes", std::to_string(s.memoryBytes));
-  member("heightMin", jsonNumber(s.heightMin));
-  member("heightMax", jsonNumber(s.heightMax));
-  member("heightsAtCrustBottom", std::to_string(s.heightsAtCrustBottom));
-  member("nonFiniteHeights", std::to_string(s.nonFiniteHeights));
-  member("supportBounds", jsonBox(s.supportBounds));
-  member("surfaceBounds", jsonBox(s.surfaceBounds));
-  return out;
-}
-
-std::string jsonString(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(c));
-      out += escaped;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
-std::string jsonNumber(double value) {
-  if (!std::isfinite(value)) return "null";
-  char text[32];
-  const auto result = std::to_chars(text, text + sizeof text, value);
-  return std::string(text, result.ptr);
+void writeSummary(JsonReport& json, const FieldSummary& s) {
+  json["vertices"] = s.vertices;
+  json["faces"] = s.faces;
+  json["resolution"] = s.resolution;
+  json["pointsPerFace"] = s.pointsPerFace;
+  json["storedHeights"] = s.storedHeights;
+  json["rasterPoints"] = s.rasterPoints;
+  json["memoryBytes"] = s.memoryBytes;
+  json["heightMin"] = s.heightMin;
+  json["heightMax"] = s.heightMax;
+  json["heightsAtCrustBottom"] = s.heightsAtCrustBottom;
+  json["nonFiniteHeights"] = s.nonFiniteHeights;
+  json["supportBounds"] = jsonBox(s.supportBounds);
+  json["surfaceBounds"] = jsonBox(s.surfaceBounds);
 }
 
 }  // namespace ddfcam::cli

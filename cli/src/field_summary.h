@@ -4,6 +4,8 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 
+#include "json_output.h"
+
 #include <array>
 #include <cstddef>
 #include <string>
@@ -33,13 +35,8 @@ FieldSummary summarize(const ddf::DisplacementField& field);
 /// @brief Human-readable multi-line text of @p s, each line "  label: value".
 std::string summaryText(const FieldSummary& s);
 
-/// @brief The members of @p s as JSON object members (no braces), indented by two spaces.
-std::string summaryJsonMembers(const FieldSummary& s);
-
-/// @brief JSON string literal of @p text (quotes and escapes).
-std::string jsonString(const std::string& text);
-
-/// @brief Shortest round-trip decimal form of @p value ("null" if not finite, as JSON wants).
-std::string jsonNumber(double value);
+/// @brief Sets the members of @p s in the JSON object @p json, in the order declared above
+/// (each bounds box as {"min": [x, y, z], "max": [x, y, z]}).
+void writeSummary(JsonReport& json, const FieldSummary& s);
 
 }  // namespace ddfcam::cli

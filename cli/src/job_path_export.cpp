@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // ddfcam-cli run: the path files of a job (CSV, APT/CLDATA, G-code) from the project's paths.
 #include <ddfcam/error.h>
-#include <ddfcam/io/programs/cl_program_builder.h>
 #include <ddfcam/io/programs/path_file.h>
 #include <ddfcam/io/programs/tool_path_csv.h>
+#include <ddfcam/planning/placement/cl_program_builder.h>
 
 #include "job_exports.h"
 
@@ -16,7 +16,7 @@ namespace {
 /// The writer options of @p spec.
 io::PathWriteParams writeParams(const ExportSpec& spec) {
   io::PathWriteParams params;
-  const io::LengthUnit unit = spec.inches ? io::LengthUnit::Inch : io::LengthUnit::Millimetre;
+  const LengthUnit unit = spec.inches ? LengthUnit::Inch : LengthUnit::Millimetre;
   switch (spec.format) {
     case ExportFormat::Csv:
       params.format = io::PathFormat::Csv;
@@ -45,13 +45,15 @@ io::PathWriteParams writeParams(const ExportSpec& spec) {
 }  // namespace
 
 void writePathExport(const ExportSpec& spec, JobResult& result) {
-  io::ExportSelection selection;
-  selection.pointKind = spec.toolPoint ? io::ClPointKind::ToolReference : io::ClPointKind::Contact;
+  planning::ExportSelection selection;
+  selection.pointKind =
+      spec.toolPoint ? planning::ClPointKind::ToolReference : planning::ClPointKind::Contact;
   selection.perRegion = spec.perRegion;
-  const std::vector<io::NamedProgram> programs = io::programsForExport(result.project, selection);
+  const std::vector<planning::NamedProgram> programs =
+      planning::programsForExport(result.project, selection);
   if (programs.empty()) throw InvalidInput("there is no path to export");
   std::set<std::filesystem::path> used;
-  for (const io::NamedProgram& named : programs) {
+  for (const planning::NamedProgram& named : programs) {
     const std::filesystem::path file =
         programs.size() == 1 ? spec.file : io::toolPathCsvFileFor(spec.file, named.name);
     if (!used.insert(file).second)

@@ -1,115 +1,97 @@
 // SPDX-License-Identifier: MIT
 // ddfcam-cli run: the report JSON of a job (counts, statistics, files; timings apart).
 #include "job_exports.h"
-#include "json_writer.h"
+#include "json_output.h"
 
 namespace ddfcam::cli {
 
 namespace {
 
-void writePart(JsonWriter& json, const planning::Project& p) {
-  json.key("part").beginObject();
-  json.key("name").value(p.partName);
-  json.key("faces").value(p.part->faceCount());
-  json.key("resolution").value(p.part->raster().m);
-  json.key("raster_points").value(p.part->allHeights().size());
-  json.endObject();
-  json.key("regions").beginArray();
+void writePart(JsonReport& json, const planning::Project& p) {
+  json["part"] = {{"name", p.partName},
+                  {"faces", p.part->faceCount()},
+                  {"resolution", p.part->raster().m},
+                  {"raster_points", p.part->allHeights().size()}};
+  JsonReport& regions = json["regions"] = JsonReport::array();
   for (const planning::Region& r : p.regions)
-    json.beginObject().key("name").value(r.name).key("faces").value(r.faces.size()).endObject();
-  json.endArray();
-  json.key("tools").beginArray();
+    regions.push_back({{"name", r.name}, {"faces", r.faces.size()}});
+  JsonReport& tools = json["tools"] = JsonReport::array();
   for (const planning::Tool& t : p.tools)
-    json.beginObject()
-        .key("name")
-        .value(t.name)
-        .key("kind")
-        .value(std::string(planning::toolKindName(t.kind)))
-        .key("radius_mm")
-        .value(t.radiusMm)
-        .endObject();
-  json.endArray();
+    tools.push_back({{"name", t.name},
+                     {"kind", std::string(planning::toolKindName(t.kind))},
+                     {"radius_mm", t.radiusMm}});
 }
 
-void writePaths(JsonWriter& json, const JobResult& r) {
-  json.key("paths").beginArray();
+JsonReport pathsJson(const JobResult& r) {
+  JsonReport json = JsonReport::array();
   for (const RegionPathInfo& info : r.paths) {
     const planning::ToolPath& path = r.project.paths[static_cast<std::size_t>(info.path)];
-    json.beginObject();
-    json.key("name").value(path.name);
-    json.key("region").value(r.project.regions[static_cast<std::size_t>(info.region)].name);
-    json.key("tool").value(path.tool);
-    json.key("lines").value(info.lines);
-    json.key("passes").value(path.passStarts.size());
-    json.key("poses").value(path.poses.size());
-    json.key("line_length_mm").value(info.lengthMm);
-    json.key("feed_mm_per_min").value(path.feedMmPerMin);
-    json.endObject();
+    JsonReport& row = json.emplace_back();
+    row["name"] = path.name;
+    row["region"] = r.project.regions[static_cast<std::size_t>(info.region)].name;
+    row["tool"] = path.tool;
+    row["lines"] = info.lines;
+    row["passes"] = path.passStarts.size();
+    row["poses"] = path.poses.size();
+    row["line_length_mm"] = info.lengthMm;
+    row["feed_mm_per_min"] = path.feedMmPerMin;
   }
-  json.endArray();
+  return json;
 }
 
-void writeSimulation(JsonWriter& json, const JobResult& r) {
-  json.key("simulation").beginArray();
+JsonReport simulationJson(const JobResult& r) {
+  JsonReport json = JsonReport::array();
   for (std::size_t i = 0; i < r.grinding.size(); ++i) {
     const planning::GrindingReport& g = r.grinding[i];
-    json.beginObject();
-    json.key("path").value(r.project.paths[i].name);
-    json.key("poses_cut").value(g.posesCut);
-    json.key("removed_volume_mm3").value(g.removedVolumeMm3);
-    json.key("heights_lowered").value(g.pointsLowered);
-    json.key("v_convexity_poses").value(g.vConvexity.size());
-    json.key("collision_poses").value(g.collisions.size());
-    json.endObject();
+    JsonReport& row = json.emplace_back();
+    row["path"] = r.project.paths[i].name;
+    row["poses_cut"] = g.posesCut;
+    row["removed_volume_mm3"] = g.removedVolumeMm3;
+    row["heights_lowered"] = g.pointsLowered;
+    row["v_convexity_poses"] = g.vConvexity.size();
+    row["collision_poses"] = g.collisions.size();
   }
-  json.endArray();
+  return json;
 }
 
-void writeErrors(JsonWriter& json, const JobSpec& spec, const JobResult& r) {
-  if (!r.errors) {
-    json.key("error_map").null();
-    return;
-  }
+JsonReport errorsJson(const JobSpec& spec, const JobResult& r) {
+  if (!r.errors) return nullptr;
   const planning::ErrorStatistics& e = *r.errors;
-  json.key("error_map").beginObject();
-  json.key("tolerance_lower_mm").value(spec.errorMap.band.lowerMm);
-  json.key("tolerance_upper_mm").value(spec.errorMap.band.upperMm);
-  json.key("max_mm").value(e.maxMm).key("min_mm").value(e.minMm);
-  json.key("mean_mm").value(e.meanMm).key("rms_mm").value(e.rmsMm);
-  json.key("in_tolerance_percent").value(e.inTolerancePercent);
-  json.key("material_left_percent").value(e.materialLeftPercent);
-  json.key("overcut_percent").value(e.overcutPercent);
-  json.key("area_mm2").value(e.areaMm2);
-  json.key("points").value(e.points);
-  json.endObject();
+  JsonReport json;
+  json["tolerance_lower_mm"] = spec.errorMap.band.lowerMm;
+  json["tolerance_upper_mm"] = spec.errorMap.band.upperMm;
+  json["max_mm"] = e.maxMm;
+  json["min_mm"] = e.minMm;
+  json["mean_mm"] = e.meanMm;
+  json["rms_mm"] = e.rmsMm;
+  json["in_tolerance_percent"] = e.inTolerancePercent;
+  json["material_left_percent"] = e.materialLeftPercent;
+  json["overcut_percent"] = e.overcutPercent;
+  json["area_mm2"] = e.areaMm2;
+  json["points"] = e.points;
+  return json;
 }
 
 }  // namespace
 
 std::string jobReport(const JobSpec& spec, const JobResult& r, bool timings) {
-  JsonWriter json;
-  json.beginObject();
-  json.key("ddfcam_job_report").value(1);
+  JsonReport json;
+  json["ddfcam_job_report"] = 1;
   writePart(json, r.project);
-  writePaths(json, r);
-  writeSimulation(json, r);
-  writeErrors(json, spec, r);
+  json["paths"] = pathsJson(r);
+  json["simulation"] = simulationJson(r);
+  json["error_map"] = errorsJson(spec, r);
   // Relative to the report, so that two runs into different directories report alike.
   const std::filesystem::path dir = spec.report ? spec.report->parent_path() : spec.baseDir;
-  json.key("files").beginArray();
+  JsonReport& files = json["files"] = JsonReport::array();
   for (const std::filesystem::path& f : r.written)
-    json.value(f.lexically_relative(dir).generic_string());
-  json.endArray();
-  json.key("notes").beginArray();
-  for (const std::string& n : r.notes) json.value(n);
-  json.endArray();
+    files.push_back(f.lexically_relative(dir).generic_string());
+  json["notes"] = r.notes;
   if (timings) {
-    json.key("timings").beginObject();
-    for (const StageTiming& t : r.timings) json.key(t.stage + "_s").value(t.seconds);
-    json.endObject();
+    JsonReport& stages = json["timings"] = JsonReport::object();
+    for (const StageTiming& t : r.timings) stages[t.stage + "_s"] = t.seconds;
   }
-  json.endObject();
-  return json.str();
+  return jsonText(json);
 }
 
 }  // namespace ddfcam::cli

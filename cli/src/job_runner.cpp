@@ -4,6 +4,7 @@
 
 #include <ddfcam/error.h>
 #include <ddfcam/planning/analysis/curvature.h>
+#include <ddfcam/planning/model/simulation_states.h>
 #include <ddfcam/planning/simulation/grinding_simulation.h>
 #include <ddfcam/planning/simulation/workpiece.h>
 #include <ddfcam/planning/tools/tool.h>
@@ -84,13 +85,11 @@ std::string planRegions(const JobSpec& spec, JobResult& result,
 std::vector<planning::GrindingReport> simulateJob(planning::Project& project,
                                                   const SimulationSpec& spec) {
   if (spec.allowanceMm) {
-    const auto& states = project.states;
-    const bool hasDesign = std::ranges::any_of(
-        states, [](const planning::SimulationState& s) { return s.name == "design"; });
-    if (!hasDesign) project.states.push_back({"design", project.part->allHeights()});
+    if (!planning::designState(project.states))
+      project.states.push_back({planning::kDesignStateName, project.part->allHeights()});
     const std::vector<float> raised =
         planning::workpieceWithAllowance(*project.part, *spec.allowanceMm).allHeights();
-    setHeights(project, raised, "stock +" + shortNumber(*spec.allowanceMm) + " mm");
+    setHeights(project, raised, planning::allowanceStateName(*spec.allowanceMm));
   }
   std::vector<planning::GrindingReport> reports;
   for (const planning::ToolPath& path : project.paths) {
@@ -98,7 +97,7 @@ std::vector<planning::GrindingReport> simulateJob(planning::Project& project,
     ddf::DisplacementField part = *project.part;
     reports.push_back(
         planning::simulateGrinding(part, planning::toolMeshes(tool), path, spec.grinding));
-    setHeights(project, part.allHeights(), "after " + path.name);
+    setHeights(project, part.allHeights(), planning::afterPathStateName(path.name));
   }
   return reports;
 }
@@ -106,9 +105,8 @@ std::vector<planning::GrindingReport> simulateJob(planning::Project& project,
 planning::ErrorStatistics errorMapJob(planning::Project& project, const ErrorMapSpec& spec) {
   const auto& states = project.states;
   if (states.empty()) throw InvalidInput("the project has no state to compare with");
-  const auto design = std::ranges::find_if(
-      states, [](const planning::SimulationState& s) { return s.name == "design"; });
-  const std::vector<float> desired = design != states.end() ? design->heights : states[0].heights;
+  const planning::SimulationState* design = planning::designState(states);
+  const std::vector<float> desired = design ? design->heights : states[0].heights;
   planning::ScalarField field = planning::deviationMap(*project.part, desired);
   field.name = "deviation";
   const planning::ErrorStatistics stats =

@@ -53,7 +53,7 @@ int run(const std::vector<std::string>& words) {
     if (words[0] != c->name) continue;
     const std::vector<std::string> args(words.begin() + 1, words.end());
     if (wantsHelp(args)) {
-      std::fputs(c->help, stdout);
+      std::fputs(c->help().c_str(), stdout);
       return 0;
     }
     return c->run(args);

@@ -16,6 +16,15 @@
 
 namespace ddfcam::cli {
 
+void addMouldOptions(Arguments& args, const MouldOptionTexts& texts) {
+  addUnitsOption(args, texts.surfaces, "mm; " + texts.written);
+  args.option("--resolution", "M", "raster resolution of " + texts.ddf)
+      ->check(integerIn(2, 64))
+      ->default_str(std::to_string(kMouldResolution));
+  args.option("--reach", "MM", texts.reach)->check(positiveNumber());
+  args.option("--json", "FILE", texts.json);
+}
+
 std::vector<double> parseNumberList(const std::string& text, std::size_t count,
                                     const std::string& option) {
   std::vector<double> values;

@@ -6,6 +6,8 @@
 #include <ddfcam/length_unit.h>
 #include <ddfcam/planning/mould/mould_study.h>
 
+#include "arguments.h"
+
 #include <chrono>
 #include <filesystem>
 #include <optional>
@@ -13,6 +15,22 @@
 #include <vector>
 
 namespace ddfcam::cli {
+
+/// @brief What the options shared by compare and compensate apply to, for their descriptions.
+struct MouldOptionTexts {
+  std::string surfaces;  ///< the files --units applies to, e.g. "MOULD and FORMED"
+  std::string written;   ///< e.g. "the outputs are in mm"
+  std::string ddf;       ///< the DDF of --resolution, e.g. "the mould DDF"
+  std::string reach;     ///< description of --reach
+  std::string json;      ///< what --json writes
+};
+
+/// @brief Default --resolution of the DDF on the mould or target.
+inline constexpr int kMouldResolution = 4;
+
+/// @brief Adds the options compare and compensate share: --units, --resolution (2..64,
+/// default kMouldResolution), --reach and --json.
+void addMouldOptions(Arguments& args, const MouldOptionTexts& texts);
 
 /// @brief @p count finite numbers separated by commas, e.g. "-0.2,0.5" for --band.
 /// @throws UsageError naming @p option if the text is not such a list.

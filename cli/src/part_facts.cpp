@@ -2,8 +2,6 @@
 // ddfcam-cli info: raster spacing, crust reach, source unit and CAD faces of a part.
 #include "part_facts.h"
 
-#include "field_summary.h"
-
 #include <algorithm>
 #include <cstdio>
 
@@ -59,22 +57,18 @@ std::string partFactsText(const PartFacts& facts) {
   return out;
 }
 
-std::string partFactsJsonMembers(const PartFacts& facts) {
+void writePartFacts(JsonReport& json, const PartFacts& facts) {
   const ddf::CrustReach& r = facts.reach;
-  std::string out = "  \"rasterSpacingMm\": " + jsonNumber(facts.rasterSpacingMm) +
-                    ",\n  \"longestSupportEdgeMm\": " + jsonNumber(facts.longestEdgeMm) +
-                    ",\n  \"crustReach\": {\"minAboveMm\": " + jsonNumber(r.minAboveMm) +
-                    ", \"medianAboveMm\": " + jsonNumber(r.medianAboveMm) +
-                    ", \"minBelowMm\": " + jsonNumber(r.minBelowMm) +
-                    ", \"medianBelowMm\": " + jsonNumber(r.medianBelowMm) + "}" +
-                    ",\n  \"sourceUnit\": " +
-                    (facts.sourceUnit ? jsonString(std::string(unitSymbol(*facts.sourceUnit)))
-                                      : std::string("null")) +
-                    ",\n  \"cadFaces\": " + std::to_string(facts.cadFaceNames.size()) +
-                    ",\n  \"cadFaceNames\": [";
-  for (std::size_t c = 0; c < facts.cadFaceNames.size(); ++c)
-    out += (c ? ", " : "") + jsonString(facts.cadFaceNames[c]);
-  return out + "]";
+  json["rasterSpacingMm"] = facts.rasterSpacingMm;
+  json["longestSupportEdgeMm"] = facts.longestEdgeMm;
+  json["crustReach"] = {{"minAboveMm", r.minAboveMm},
+                        {"medianAboveMm", r.medianAboveMm},
+                        {"minBelowMm", r.minBelowMm},
+                        {"medianBelowMm", r.medianBelowMm}};
+  json["sourceUnit"] = facts.sourceUnit ? JsonReport(std::string(unitSymbol(*facts.sourceUnit)))
+                                        : JsonReport(nullptr);
+  json["cadFaces"] = facts.cadFaceNames.size();
+  json["cadFaceNames"] = facts.cadFaceNames;
 }
 
 }  // namespace ddfcam::cli

@@ -7,6 +7,8 @@
 #include <ddfcam/ddf/stock_crust.h>
 #include <ddfcam/length_unit.h>
 
+#include "json_output.h"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,8 +34,9 @@ PartFacts partFacts(const ddf::DisplacementField& field);
 /// @brief Lines "  label: value" of @p facts (spacing, reach, unit, CAD faces and names).
 std::string partFactsText(const PartFacts& facts);
 
-/// @brief JSON object members of @p facts (no braces), each on its own line indented by two
-/// spaces, separated by commas.
-std::string partFactsJsonMembers(const PartFacts& facts);
+/// @brief Sets the members of @p facts in the JSON object @p json: rasterSpacingMm,
+/// longestSupportEdgeMm, crustReach {minAboveMm, medianAboveMm, minBelowMm, medianBelowMm},
+/// sourceUnit (null when not recorded), cadFaces and cadFaceNames.
+void writePartFacts(JsonReport& json, const PartFacts& facts);
 
 }  // namespace ddfcam::cli

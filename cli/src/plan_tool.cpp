@@ -5,7 +5,6 @@
 #include <ddfcam/error.h>
 #include <ddfcam/planning/lines/streamline_path.h>
 
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -14,17 +13,6 @@
 namespace ddfcam::cli {
 
 namespace {
-
-/// Finite number given for @p name, or @p fallback.
-double signedNumber(const Arguments& args, const std::string& name, double fallback) {
-  const std::optional<std::string> text = args.value(name);
-  if (!text) return fallback;
-  double value = 0;
-  const auto [end, error] = std::from_chars(text->data(), text->data() + text->size(), value);
-  if (error != std::errc() || end != text->data() + text->size() || !std::isfinite(value))
-    throw UsageError("--" + name + " " + *text + ": expected a number");
-  return value;
-}
 
 planning::ToolKind parseKind(const Arguments& args) {
   const std::string name = args.value("tool").value_or("roll");
@@ -45,9 +33,9 @@ planning::ToolKind parseKind(const Arguments& args) {
 
 planning::Tool makeTool(const Arguments& args) {
   const planning::ToolKind kind = parseKind(args);
-  const double radius = args.positiveNumber("radius").value_or(5.0);
+  const double radius = args.number("radius").value_or(5.0);
   const bool torus = kind == planning::ToolKind::TorusCutter;
-  const std::optional<double> corner = args.positiveNumber("corner-radius");
+  const std::optional<double> corner = args.number("corner-radius");
   if (corner && !torus && kind != planning::ToolKind::CylinderRoll &&
       kind != planning::ToolKind::BeltContactWheel)
     throw UsageError("--corner-radius needs --tool torus, roll or belt_wheel");
@@ -70,17 +58,41 @@ planning::Tool makeTool(const Arguments& args) {
 
 }  // namespace
 
+void addPlanToolOptions(Arguments& args) {
+  args.option("--tool", "KIND",
+              "tool shape: roll, ball (bare sphere), ball_end, flat_end, torus,\n"
+              "belt_wheel (or a tool-library key such as torus_cutter)\n"
+              "(default roll); wheels are 2 radius wide, cutters' flutes 2\n"
+              "radius long");
+  args.option("--radius", "MM", "tool radius")->check(positiveNumber())->default_str("5");
+  args.option("--corner-radius", "MM",
+              "corner radius of torus (default radius / 4) or rim radius of\n"
+              "roll and belt_wheel (default 0)")
+      ->check(positiveNumber());
+  args.option("--lead", "DEG",
+              "lead angle (axis towards the feed), |angle| < 90 (default 0;\n"
+              "negative: --lead=-5)");
+  args.option("--tilt", "DEG", "tilt angle (about the feed), |angle| < 90 (default 0)");
+  args.option("--tolerance", "MM",
+              "resample the lines along the feed at the step that keeps the\n"
+              "feed chord error and the cusp between poses below MM (bounded\n"
+              "by the raster spacing) (default: a pose at every line point)")
+      ->check(positiveNumber());
+  args.option("--step", "MM", "resample at this fixed step instead (overrides the tolerance)")
+      ->check(positiveNumber());
+}
+
 PlanTool parsePlanTool(const Arguments& args) {
   PlanTool t;
   t.tool = makeTool(args);
-  t.placement.leadDeg = signedNumber(args, "lead", 0.0);
-  t.placement.tiltDeg = signedNumber(args, "tilt", 0.0);
+  t.placement.leadDeg = args.number("lead").value_or(0.0);
+  t.placement.tiltDeg = args.number("tilt").value_or(0.0);
   for (const auto& [name, deg] :
        {std::pair{"lead", t.placement.leadDeg}, std::pair{"tilt", t.placement.tiltDeg}})
     if (!(std::abs(deg) < 90.0))
       throw UsageError(std::string("--") + name + " must lie within (-90, 90) deg");
-  const std::optional<double> tolerance = args.positiveNumber("tolerance");
-  const std::optional<double> step = args.positiveNumber("step");
+  const std::optional<double> tolerance = args.number("tolerance");
+  const std::optional<double> step = args.number("step");
   if (tolerance || step) {
     t.sampling = planning::PathSamplingParams{};
     if (tolerance) t.sampling->toleranceMm = *tolerance;

@@ -32,6 +32,10 @@ struct PlanTool {
 /// validateTool() refuses.
 PlanTool parsePlanTool(const Arguments& args);
 
+/// @brief Adds the options parsePlanTool() reads: --tool, --radius, --corner-radius, --lead,
+/// --tilt, --tolerance, --step.
+void addPlanToolOptions(Arguments& args);
+
 /// @brief Placed, linked lines ready for the CSV.
 struct PlacedProgram {
   planning::ToolPath path;         ///< one pass per kept line, poses in the tool kind's frame

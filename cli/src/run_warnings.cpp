@@ -2,8 +2,6 @@
 // ddfcam-cli: the warnings of one command run, for the summary, the JSON report and --strict.
 #include "run_warnings.h"
 
-#include <charconv>
-#include <cmath>
 #include <cstdio>
 
 namespace ddfcam::cli {
@@ -13,11 +11,9 @@ void RunWarnings::add(const std::string& text) {
   texts_.push_back(text);
 }
 
-void RunWarnings::write(JsonWriter& json) const {
-  json.key("run_warnings").value(count());
-  json.key("warning_texts").beginArray();
-  for (const std::string& text : texts_) json.value(text);
-  json.endArray();
+void RunWarnings::write(JsonReport& json) const {
+  json["run_warnings"] = count();
+  json["warning_texts"] = texts_;
 }
 
 int RunWarnings::exitCode(bool strict, const std::string& command) const {
@@ -27,15 +23,12 @@ int RunWarnings::exitCode(bool strict, const std::string& command) const {
   return kStrictWarningExitCode;
 }
 
+CLI::Option* addMinCoverageOption(Arguments& args, const std::string& description) {
+  return args.option("--min-coverage", "P", description)->check(numberIn(0.0, 100.0));
+}
+
 double minCoverageOption(const Arguments& args, double fallback) {
-  const std::optional<std::string> text = args.value("min-coverage");
-  if (!text) return fallback;
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(text->data(), text->data() + text->size(), value);
-  if (error != std::errc() || end != text->data() + text->size() || !std::isfinite(value) ||
-      value < 0.0 || value > 100.0)
-    throw UsageError("--min-coverage " + *text + ": expected a percentage in [0, 100]");
-  return value;
+  return args.number("min-coverage").value_or(fallback);
 }
 
 }  // namespace ddfcam::cli

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "arguments.h"
-#include "json_writer.h"
+#include "json_output.h"
 
 #include <string>
 #include <vector>
@@ -24,8 +24,9 @@ class RunWarnings {
   void addPrinted(int count) { printed_ += count; }
   /// @brief All warnings of the run.
   int count() const { return printed_ + static_cast<int>(texts_.size()); }
-  /// @brief Writes "run_warnings": count and "warning_texts": [...] (the added ones).
-  void write(JsonWriter& json) const;
+  /// @brief Sets "run_warnings": count and "warning_texts": [...] (the added ones) in the
+  /// object @p json.
+  void write(JsonReport& json) const;
   /// @brief 0, or with @p strict and warnings kStrictWarningExitCode after printing
   /// "COMMAND: N warnings with --strict" to stderr.
   int exitCode(bool strict, const std::string& command) const;
@@ -35,8 +36,10 @@ class RunWarnings {
   int printed_ = 0;
 };
 
-/// @brief The --min-coverage PERCENT option: a number in [0, 100], or @p fallback if absent.
-/// @throws UsageError for anything else.
+/// @brief Adds --min-coverage P (a percentage in [0, 100]) with @p description.
+CLI::Option* addMinCoverageOption(Arguments& args, const std::string& description);
+
+/// @brief The --min-coverage of addMinCoverageOption(), or @p fallback if absent.
 double minCoverageOption(const Arguments& args, double fallback);
 
 }  // namespace ddfcam::cli

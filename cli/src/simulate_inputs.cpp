@@ -1,9 +1,7 @@
 // SPDX-License-Identifier: MIT
-// ddfcam-cli simulate: command-line options, the tool, and the tool path from a tool-path CSV.
+// ddfcam-cli simulate: command-line options and the tool.
 #include "simulate_inputs.h"
 
-#include <ddfcam/ddf/surface_locator.h>
-#include <ddfcam/ddf/surface_sampling.h>
 #include <ddfcam/error.h>
 #include <ddfcam/io/project/tool_library_file.h>
 
@@ -13,7 +11,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 
 #include "arguments.h"
 #include "run_warnings.h"
@@ -91,8 +88,8 @@ planning::Tool toolFromOptions(const Arguments& args, const std::string& kindNam
     throw UsageError("--corner-radius applies to wheels and torus_cutter only");
   if (torus && !args.has("corner-radius"))
     throw UsageError("--tool torus_cutter needs --corner-radius MM");
-  tool.radiusMm = args.positiveNumber("radius").value_or(5.0);
-  tool.widthMm = args.positiveNumber("width").value_or(2.0 * tool.radiusMm);
+  tool.radiusMm = args.number("radius").value_or(5.0);
+  tool.widthMm = args.number("width").value_or(2.0 * tool.radiusMm);
   tool.edgeRadiusMm = number(args, "corner-radius", 0.0);
   // Facets from the chord error, a quarter of the tolerance band, so that the polygonal tool
   // (vertices on the true surface) cannot move the statistics by more than that.
@@ -105,61 +102,180 @@ planning::Tool toolFromOptions(const Arguments& args, const std::string& kindNam
   return tool;
 }
 
-const std::array<OptionSpec, 37> kSpecs = {kUnitsOption,
-                                           OptionSpec{"paths", '\0', true},
-                                           OptionSpec{"path-units", '\0', true},
-                                           OptionSpec{"translate", '\0', true},
-                                           OptionSpec{"rotate", '\0', true},
-                                           OptionSpec{"keep-rapids", '\0', false},
-                                           OptionSpec{"vectors", '\0', true},
-                                           OptionSpec{"points", '\0', true},
-                                           OptionSpec{"output", 'o', true},
-                                           OptionSpec{"error-map", '\0', true},
-                                           OptionSpec{"report", '\0', true},
-                                           OptionSpec{"tool", '\0', true},
-                                           OptionSpec{"tool-file", '\0', true},
-                                           OptionSpec{"tool-name", '\0', true},
-                                           OptionSpec{"radius", '\0', true},
-                                           OptionSpec{"width", '\0', true},
-                                           OptionSpec{"corner-radius", '\0', true},
-                                           OptionSpec{"allowance", '\0', true},
-                                           OptionSpec{"stock-mesh", '\0', true},
-                                           OptionSpec{"tolerance", '\0', true},
-                                           OptionSpec{"no-vconvexity-check", '\0', false},
-                                           OptionSpec{"lead", '\0', true},
-                                           OptionSpec{"tilt", '\0', true},
-                                           OptionSpec{"sample-tolerance", '\0', true},
-                                           OptionSpec{"step", '\0', true},
-                                           OptionSpec{"swept", '\0', false},
-                                           OptionSpec{"correct", '\0', false},
-                                           OptionSpec{"correct-every", '\0', true},
-                                           OptionSpec{"correct-grid", '\0', true},
-                                           OptionSpec{"preston", '\0', false},
-                                           OptionSpec{"force", '\0', true},
-                                           OptionSpec{"kp", '\0', true},
-                                           OptionSpec{"wheel-speed", '\0', true},
-                                           OptionSpec{"feed", '\0', true},
-                                           OptionSpec{"infeed", '\0', true},
-                                           OptionSpec{"min-coverage", '\0', true},
-                                           OptionSpec{"strict", '\0', false}};
+constexpr const char* kDescription =
+    "Grinds the cut moves of a tool-path file (a CSV as written by 'ddfcam-cli plan',\n"
+    "APT/CLDATA, ROS toolpath YAML or FANUC .ls; see 'ddfcam-cli paths') into PART (a .ddf\n"
+    "file, a mesh or CAD file converted as 'plan' does, in --units, a .ddfproj\n"
+    "project's part, or 'demo'). PART's heights are the desired surface; the workpiece is that\n"
+    "surface raised by the allowance along its normal, or a stock mesh. The tool is placed at\n"
+    "every contact point (x y z, or the tool reference point minus the tool's reference offset\n"
+    "for 'tool' CSVs) with the CSV's normal, wheels with the planned axis, touching the\n"
+    "surface; every pose is cut by the DDF depth buffer (or by Preston removal). Writes the\n"
+    "simulated part, optionally the signed deviation from the desired surface (mm along its\n"
+    "normal; > 0 material left, < 0 overcut) as a .vtp error map and the statistics as JSON,\n"
+    "and prints a summary. APT, YAML and .ls programs and CSV tables without normals are placed\n"
+    "by their own tool axes (contacts found on PART; a point without an axis points +z); their\n"
+    "link moves are cut, rapid moves only with --keep-rapids.\n"
+    "Beside the statistics it reports the coverage (the share of the part the tool came within\n"
+    "0.1 mm of the desired surface at some pose) and the raster points cut below the crust\n"
+    "bottom, where the depth buffer clamps the cut, so the true overcut is deeper than the\n"
+    "minimum shown. Warns about those, a coverage below --min-coverage, poses off the part,\n"
+    "non-V-convex cuts and collisions; with --strict any warning makes the exit code 3 (after\n"
+    "writing the outputs).";
+
+void addPathOptions(Arguments& args) {
+  args.option("--paths", "FILE",
+              "tool-path file (required): CSV (link and rapid rows are not\n"
+              "cut), APT/CLDATA, ROS toolpath YAML or FANUC .ls");
+  args.option("--path-units", "mm|in|m",
+              "the file's numbers are in this unit (overrides the file's)");
+  args.option("--rotate", "AX,AY,AZ",
+              "rotate the path about the part's x, y, z axes, deg, as\n"
+              "Rz(AZ) Ry(AY) Rx(AX) (x first), before --translate");
+  args.option("--translate", "X,Y,Z",
+              "move the path by this vector, mm, after the unit and rotation");
+  args.flag("--keep-rapids", "also place and cut the rapid moves (not for CSVs with normals)");
+  args.option("--vectors", "axis|approach|normal|auto",
+              "what the file's i,j,k vectors are: tool axes (tip to holder),\n"
+              "approach directions (into the part, as robots give them) or\n"
+              "surface normals; auto (default) decides from PART (into it:\n"
+              "approach) and the report says why; a gouging choice is warned");
+  args.option("--points", "contact|tip|file|auto",
+              "what the file's points are: contacts on the surface, tool tips\n"
+              "(wheel and ball centres), as the file says; auto (default)\n"
+              "decides from their distance to PART");
+}
+
+void addOutputOptions(Arguments& args) {
+  args.option("-o,--output", "FILE", "simulated part as .ddf (required)");
+  args.option("--error-map", "FILE", "deviation per raster point as VTK PolyData (.vtp)");
+  args.option("--report", "FILE", "statistics as JSON");
+  addMinCoverageOption(args,
+                       "warn when the tool touches less than P % of the part (default\n"
+                       "5: even a path for one region covers more)");
+  args.flag("--strict", "exit with code 3 when the run had any warning");
+}
+
+void addToolOptions(Arguments& args) {
+  const std::string group = "tool";
+  args.option("--tool", "KIND",
+              "roll (= cylinder_roll, default), ball (bare sphere = sphere),\n"
+              "cylinder_roll, sphere, belt_contact_wheel, ball_end, flat_end,\n"
+              "torus_cutter")
+      ->group(group);
+  args.option("--radius", "MM", "tool radius")
+      ->check(positiveNumber())
+      ->default_str("5")
+      ->group(group);
+  args.option("--width", "MM",
+              "wheel width or cutter flute length (default 2 x radius; not\nfor ball)")
+      ->check(positiveNumber())
+      ->group(group);
+  args.option("--corner-radius", "MM",
+              "wheel rim radius, or torus_cutter corner radius (required there)")
+      ->check(positiveNumber())
+      ->group(group);
+  args.option("--tool-file", "FILE",
+              "take the tool --tool-name from a tool library file instead of\n"
+              "--tool, --radius, --width, --corner-radius")
+      ->group(group);
+  args.option("--tool-name", "NAME", "the tool's name in --tool-file")->group(group);
+  args.option("--lead", "DEG",
+              "lead angle of the tool at the contact, |angle| < 90 (default 0;\n"
+              "CSVs with normals only: programs carry their tool axes)")
+      ->group(group);
+  args.option("--tilt", "DEG", "tilt angle of the tool at the contact (as --lead)")->group(group);
+}
+
+void addSamplingOptions(Arguments& args) {
+  const std::string group =
+      "sampling along the feed (CSVs with normals only; default: one pose per CSV row)";
+  args.option("--sample-tolerance", "MM",
+              "resample every pass at the step derived from this tolerance\n"
+              "(feed chord, raster spacing, tool profile cusp; default rule\n"
+              "tolerance = --tolerance when only --step is given)")
+      ->check(positiveNumber())
+      ->group(group);
+  args.option("--step", "MM", "resample every pass at this fixed step instead")
+      ->check(positiveNumber())
+      ->group(group);
+}
+
+void addWorkpieceOptions(Arguments& args) {
+  const std::string group = "workpiece and process";
+  args.option("--allowance", "MM",
+              "stock above the desired surface along its normal (default 0:\n"
+              "the workpiece is the desired surface, so only gouges show)")
+      ->group(group);
+  args.option("--stock-mesh", "FILE",
+              "workpiece from a stock mesh (.stl/.obj/.ply/.off) converted onto\n"
+              "PART's support instead of --allowance (read in --units)")
+      ->group(group);
+  addUnitsOption(args, "a mesh or CAD PART and of the stock mesh",
+                 "the unit a CAD file states, mm for meshes")
+      ->group(group);
+  args.flag("--swept", "cut the swept volume between consecutive poses (convex tools)")
+      ->group(group);
+  args.flag("--correct",
+            "lift every pose off the desired surface until it no longer\n"
+            "penetrates it (tangential DDF, sec. 8.4.2) before cutting")
+      ->group(group);
+  args.option("--correct-every", "K", "exact lift at every K-th pose, interpolated between")
+      ->check(integerIn(1, 1000000))
+      ->default_str("1")
+      ->group(group);
+  args.option("--correct-grid", "N", "tangential grid N x N")
+      ->check(integerIn(2, 4096))
+      ->default_str("50")
+      ->group(group);
+}
+
+void addPrestonOptions(Arguments& args) {
+  const std::string group = "workpiece and process";
+  args.flag("--preston", "Preston removal (depth = K_p p v_s dt) instead of the rigid cut")
+      ->group(group);
+  args.option("--kp", "MM2_PER_N", "Preston coefficient K_p, mm^2/N (default 1e-7)")
+      ->check(positiveNumber())
+      ->group(group);
+  args.option("--force", "N", "normal force, N (default 10)")
+      ->check(positiveNumber())
+      ->group(group);
+  args.option("--wheel-speed", "M_PER_S", "wheel surface speed, m/s (default 30)")
+      ->check(positiveNumber())
+      ->group(group);
+  args.option("--feed", "MM_PER_MIN", "feed (default: the CSV's feed)")
+      ->check(positiveNumber())
+      ->group(group);
+  args.option("--infeed", "MM", "infeed of the undeformed tool setting the contact patch (0.1)")
+      ->check(positiveNumber())
+      ->group(group);
+  args.option("--tolerance", "MM", "tolerance band [-T, T] of the statistics")
+      ->check(positiveNumber())
+      ->default_str("0.01")
+      ->group(group);
+  args.flag("--no-vconvexity-check",
+            "skip the check for cuts that are not V-convex (fig. 8.15);\n"
+            "the check probes every stubble under the tool at every pose")
+      ->group(group);
+}
 
 void parseProcess(const Arguments& args, SimulateOptions& o) {
-  o.sampleToleranceMm = args.positiveNumber("sample-tolerance");
-  o.stepMm = args.positiveNumber("step");
+  o.sampleToleranceMm = args.number("sample-tolerance");
+  o.stepMm = args.number("step");
   o.swept = args.has("swept");
   o.correction.enabled = args.has("correct");
   rejectWithout(args, {"correct-every", "correct-grid"}, o.correction.enabled, "--correct");
-  o.correction.every = args.integer("correct-every", 1, 1, 1000000);
-  o.correction.grid = args.integer("correct-grid", 50, 2, 4096);
+  o.correction.every = args.integer("correct-every", 1);
+  o.correction.grid = args.integer("correct-grid", 50);
   PrestonOptions& p = o.preston;
   p.enabled = args.has("preston");
   rejectWithout(args, {"force", "kp", "wheel-speed", "feed", "infeed"}, p.enabled, "--preston");
   if (p.enabled && o.swept) throw UsageError("--swept cannot be combined with --preston");
-  p.kpMm2PerN = args.positiveNumber("kp").value_or(p.kpMm2PerN);
-  p.forceN = args.positiveNumber("force").value_or(p.forceN);
-  p.wheelSpeedMPerS = args.positiveNumber("wheel-speed").value_or(p.wheelSpeedMPerS);
-  p.feedMmPerMin = args.positiveNumber("feed");
-  p.infeedMm = args.positiveNumber("infeed").value_or(p.infeedMm);
+  p.kpMm2PerN = args.number("kp").value_or(p.kpMm2PerN);
+  p.forceN = args.number("force").value_or(p.forceN);
+  p.wheelSpeedMPerS = args.number("wheel-speed").value_or(p.wheelSpeedMPerS);
+  p.feedMmPerMin = args.number("feed");
+  p.infeedMm = args.number("infeed").value_or(p.infeedMm);
 }
 
 // Three finite numbers "X,Y,Z" given for @p name, or zero.
@@ -185,11 +301,11 @@ ImportOptions parseImport(const Arguments& args) {
   ImportOptions im;
   if (const auto unit = args.value("path-units")) {
     if (*unit == "mm")
-      im.unit = io::LengthUnit::Millimetre;
+      im.unit = LengthUnit::Millimetre;
     else if (*unit == "in")
-      im.unit = io::LengthUnit::Inch;
+      im.unit = LengthUnit::Inch;
     else if (*unit == "m")
-      im.unit = io::LengthUnit::Metre;
+      im.unit = LengthUnit::Metre;
     else
       throw UsageError("--path-units " + *unit + ": expected mm|in|m");
   }
@@ -197,12 +313,12 @@ ImportOptions parseImport(const Arguments& args) {
   im.rotateDeg = triple(args, "rotate");
   im.keepRapids = args.has("keep-rapids");
   if (const auto v = args.value("vectors")) {
-    const auto meaning = io::pathVectorMeaningFromName(*v);
+    const auto meaning = planning::pathVectorMeaningFromName(*v);
     if (!meaning) throw UsageError("--vectors " + *v + ": expected axis|approach|normal|auto");
     im.vectors = *meaning;
   }
   if (const auto v = args.value("points")) {
-    const auto meaning = io::pathPointMeaningFromName(*v);
+    const auto meaning = planning::pathPointMeaningFromName(*v);
     if (!meaning) throw UsageError("--points " + *v + ": expected contact|tip|file|auto");
     im.points = *meaning;
   }
@@ -221,8 +337,21 @@ Eigen::Isometry3d ImportOptions::transform() const {
   return t;
 }
 
+Arguments simulateArguments() {
+  Arguments args("simulate", "simulate PART --paths FILE -o OUT.ddf [options]", kDescription);
+  args.positional("PART", "the part: .ddf, mesh or CAD file, .ddfproj or 'demo'");
+  addPathOptions(args);
+  addOutputOptions(args);
+  addToolOptions(args);
+  addSamplingOptions(args);
+  addWorkpieceOptions(args);
+  addPrestonOptions(args);
+  return args;
+}
+
 SimulateOptions parseSimulateOptions(std::span<const std::string> words) {
-  const Arguments args(words, kSpecs, "simulate");
+  Arguments args = simulateArguments();
+  args.parse(words);
   args.expectPositionals(1, "an input part (.ddf, mesh, .ddfproj or 'demo')");
   SimulateOptions o;
   o.input = args.positionals()[0];
@@ -230,7 +359,7 @@ SimulateOptions parseSimulateOptions(std::span<const std::string> words) {
   o.output = args.required("output");
   if (const auto v = args.value("error-map")) o.errorMap = *v;
   if (const auto v = args.value("report")) o.report = *v;
-  o.toleranceMm = args.positiveNumber("tolerance").value_or(0.01);
+  o.toleranceMm = args.number("tolerance").value_or(0.01);
   if (args.has("stock-mesh") && args.has("allowance"))
     throw UsageError("--stock-mesh and --allowance exclude each other");
   if (const auto v = args.value("stock-mesh")) o.stockMesh = *v;
@@ -254,91 +383,6 @@ SimulateOptions parseSimulateOptions(std::span<const std::string> words) {
     o.tool = toolFromOptions(args, o.toolKind, o.toleranceMm);
   }
   return o;
-}
-
-namespace {
-
-using CutRows = std::vector<const io::ClPoint*>;
-
-std::string rowName(const io::ClPoint& r) {
-  return "row of path " + std::to_string(r.path) + " point " + std::to_string(r.point);
-}
-
-// Crust boxes of the faces (vertices +- vectors), grown by a tenth of the longest vector.
-CsvPath resampled(const CutRows& rows, const std::vector<ddf::Vec3>& contacts,
-                  const ddf::DisplacementField& goal, const SimulateOptions& o,
-                  const std::string& source) {
-  const ddf::SurfaceLocator locator(goal);
-  std::vector<std::vector<ddf::SurfaceLocation>> passes;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (i == 0 || rows[i - 1]->path != rows[i]->path) passes.emplace_back();
-    const auto location = locator.locate(contacts[i]);
-    if (!location)
-      throw InvalidInput("simulate: " + source + ": " + rowName(*rows[i]) +
-                         ": contact does not lie on the part");
-    passes.back().push_back(*location);
-  }
-  planning::PathSamplingParams sampling;
-  sampling.toleranceMm = o.sampleToleranceMm.value_or(o.toleranceMm);
-  sampling.stepOverrideMm = o.stepMm;
-  sampling.name = source;
-  planning::PlacedPath placed =
-      planning::placeAlongPathDetailed(goal, passes, o.tool, 0, o.placement, sampling);
-  return {std::move(placed.path), {}, std::move(placed.passes), {}};
-}
-
-// Wheels keep the planned axis (feed = axis x n); other tools, or an axis along the normal,
-// feed along the chord through the neighbours of the pass (the reference offset is the same
-// for both neighbours, so the chord of the raw points serves either CSV kind).
-ddf::Vec3 feedAt(const CutRows& rows, std::size_t i, const ddf::Vec3& n, bool wheel) {
-  const io::ClPoint& r = *rows[i];
-  ddf::Vec3 feed = r.axis ? r.axis->cross(n) : ddf::Vec3::Zero();
-  if (wheel && feed.norm() >= 1e-6) return feed;
-  const bool passStart = i == 0 || rows[i - 1]->path != r.path;
-  const bool passEnd = i + 1 == rows.size() || rows[i + 1]->path != r.path;
-  feed = (passEnd ? r.positionMm : rows[i + 1]->positionMm) -
-         (passStart ? r.positionMm : rows[i - 1]->positionMm);
-  if ((feed - feed.dot(n) * n).norm() < 1e-12) feed = n.unitOrthogonal();
-  return feed;
-}
-
-}  // namespace
-
-CsvPath pathFromCsv(const io::ClProgram& table, const ddf::DisplacementField& goal,
-                    const SimulateOptions& o, const std::string& source) {
-  CutRows rows;
-  for (const io::ClPoint& row : table.points)
-    if (row.move == planning::MoveKind::Cut) rows.push_back(&row);
-  if (rows.empty()) throw InvalidInput("simulate: " + source + " has no cut rows");
-  const bool wheel = o.tool.kind == planning::ToolKind::CylinderRoll ||
-                     o.tool.kind == planning::ToolKind::BeltContactWheel;
-  CsvPath out;
-  out.path.name = source;
-  std::vector<ddf::Vec3> contacts;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const io::ClPoint& r = *rows[i];
-    const bool passStart = i == 0 || rows[i - 1]->path != r.path;
-    if (passStart) out.path.passStarts.push_back(static_cast<int>(out.path.poses.size()));
-    const ddf::Vec3 n = r.normal ? r.normal->normalized()
-                                 : ddf::Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
-    if (!n.allFinite() || !r.positionMm.allFinite())
-      throw InvalidInput("simulate: " + source + ": " + rowName(r) + " has no usable normal");
-    const ddf::Vec3 feed = feedAt(rows, i, n, wheel);
-    const ddf::Vec3 contact =
-        table.pointKind == io::ClPointKind::Contact
-            ? r.positionMm
-            : ddf::Vec3(r.positionMm -
-                        planning::placeToolDetailed(o.tool, r.positionMm, n, feed, o.placement)
-                            .referenceOffset);
-    contacts.push_back(contact);
-    out.normals.push_back(n);
-    out.path.poses.push_back({planning::placeTool(o.tool, contact, n, feed, o.placement), contact});
-  }
-  out.path.feedMmPerMin = rows.front()->feedMmPerMin > 0 ? rows.front()->feedMmPerMin : 1000.0;
-  if (!o.resample()) return out;
-  CsvPath placed = resampled(rows, contacts, goal, o, source);
-  placed.path.feedMmPerMin = out.path.feedMmPerMin;
-  return placed;
 }
 
 }  // namespace ddfcam::cli

@@ -1,19 +1,21 @@
 // SPDX-License-Identifier: MIT
-// ddfcam-cli simulate: the parsed command line and the tool path built from a tool-path CSV.
+// ddfcam-cli simulate: the parsed command line, and what importing the path file found.
 #pragma once
 
 #include <ddfcam/ddf/displacement_field.h>
-#include <ddfcam/io/programs/cl_program.h>
-#include <ddfcam/io/programs/imported_path.h>
 #include <ddfcam/io/programs/tool_path_csv.h>
 #include <ddfcam/length_unit.h>
 #include <ddfcam/planning/inspection/coverage.h>
 #include <ddfcam/planning/model/tool_path.h>
+#include <ddfcam/planning/placement/cl_program.h>
+#include <ddfcam/planning/placement/imported_path.h>
 #include <ddfcam/planning/placement/path_sampling.h>
 #include <ddfcam/planning/placement/tool_orientation.h>
 #include <ddfcam/planning/tools/tool.h>
 
 #include <Eigen/Geometry>
+
+#include "arguments.h"
 
 #include <filesystem>
 #include <optional>
@@ -43,14 +45,14 @@ struct CorrectionOptions {
 /// @brief How a path file is read and placed on the part (--path-units, --translate, --rotate,
 /// --keep-rapids, --vectors, --points).
 struct ImportOptions {
-  std::optional<io::LengthUnit> unit;         ///< --path-units (default: the file's own)
+  std::optional<LengthUnit> unit;             ///< --path-units (default: the file's own)
   ddf::Vec3 translateMm = ddf::Vec3::Zero();  ///< --translate X,Y,Z, mm (default 0)
   ddf::Vec3 rotateDeg = ddf::Vec3::Zero();    ///< --rotate AX,AY,AZ, deg (default 0)
   bool keepRapids = false;                    ///< --keep-rapids (default false)
   /// --vectors axis|approach|normal|auto: what the file's i,j,k vectors are (default auto).
-  io::PathVectorMeaning vectors = io::PathVectorMeaning::Auto;
+  planning::PathVectorMeaning vectors = planning::PathVectorMeaning::Auto;
   /// --points contact|tip|file|auto: what the file's positions are (default auto).
-  io::PathPointMeaning points = io::PathPointMeaning::Auto;
+  planning::PathPointMeaning points = planning::PathPointMeaning::Auto;
 
   /// File frame -> part frame: Translation(translateMm) * Rz(AZ) * Ry(AY) * Rx(AX).
   Eigen::Isometry3d transform() const;
@@ -84,6 +86,9 @@ struct SimulateOptions {
   bool resample() const { return sampleToleranceMm.has_value() || stepMm.has_value(); }
 };
 
+/// @brief The option table of "simulate", which also gives its --help.
+Arguments simulateArguments();
+
 /// @brief Parses the words after "simulate".
 /// @throws UsageError for unknown, missing, malformed or conflicting options (exit code 2).
 /// @throws IoError / InvalidInput if --tool-file cannot be read or has no tool --tool-name.
@@ -94,17 +99,17 @@ struct ImportFacts {
   std::string format;      ///< pathFormatName() of the file, e.g. "APT/CLDATA"
   std::string unit;        ///< unit the file's numbers were taken in: "mm", "in" or "m"
   std::string placement;   ///< "contacts" (CSV: --lead/--tilt at each contact) or "program axes"
-  std::string vectors;     ///< vectors read as: "axis", "approach", "normal"; "file normals"
+  std::string vectors;     ///< vectors read as: "axis", "approach" or "normal"
   std::string points;      ///< points read as: "contact" or "tip"
   std::string convention;  ///< what was used for vectors and points, and why
   int pointsRead = 0;      ///< points of the program read
   int posesPlaced = 0;     ///< poses of the simulated path
-  int pointsOffPart = 0;   ///< poses whose contact lies farther than 2 mm from the part
+  int pointsOffPart = 0;   ///< planning::ImportedPath::pointsOffPart of the placement
   double maxContactDistanceMm = 0.0;  ///< largest |contact distance| over all poses, mm
   /// Largest |contact distance| over the poses on the part, mm; empty if none is on it.
   std::optional<double> maxOnPartContactDistanceMm;
-  /// Poses whose tool reaches into the part (io::ImportedPath::gougingPoses); empty where the
-  /// route does not measure it (CSV contacts: the tool is placed touching).
+  /// Poses whose tool reaches into the part (planning::ImportedPath::gougingPoses); empty where
+  /// nothing measured it.
   std::optional<int> gougingPoses;
   std::optional<double> maxGougeDepthMm;  ///< deepest reach into the part, mm; as gougingPoses
   int warnings = 0;                       ///< warnings of the reader and the placement
@@ -112,21 +117,10 @@ struct ImportFacts {
 
 /// @brief The cut moves of a tool path and the contact normals.
 struct CsvPath {
-  planning::ToolPath path;                       ///< poses at the CSV rows (or resampled)
-  std::vector<ddf::Vec3> normals;                ///< #P unit normals, empty if resampled
+  planning::ToolPath path;                       ///< poses placed (or resampled)
+  std::vector<ddf::Vec3> normals;                ///< #P unit contact normals; empty if resampled
   std::vector<planning::PassSampling> sampling;  ///< per pass when resampled, else empty
   ImportFacts facts;                             ///< set by importSimulationPath()
 };
-
-/// @brief The cut rows of @p table as a tool path on @p goal: one pass per CSV path, the tool
-/// placed with o.placement at every contact (x y z, or the reference point minus the tool's
-/// reference offset for 'tool' CSVs) with the CSV's normal; rolls keep the planned axis, other
-/// tools feed along the chord through the neighbouring rows. With o.resample() each pass's
-/// contacts are located on @p goal and the tool is placed by planning::placeAlongPathDetailed
-/// at the step of o.stepMm or of the tolerance o.sampleToleranceMm (default o.toleranceMm).
-/// @throws InvalidInput naming @p source for no cut rows, unusable normals or contacts that do
-/// not lie on @p goal.
-CsvPath pathFromCsv(const io::ClProgram& table, const ddf::DisplacementField& goal,
-                    const SimulateOptions& o, const std::string& source);
 
 }  // namespace ddfcam::cli

@@ -12,22 +12,23 @@
 
 namespace ddfcam::cli {
 
-std::string unitsHelpLine(int column) {
-  std::string line = "  --units U";
-  line.resize(static_cast<std::size_t>(column), ' ');
-  return line + "unit of the input file's coordinates: " + std::string(lengthUnitChoices()) + "\n" +
-         std::string(static_cast<std::size_t>(column), ' ') +
-         "(default: the unit a STEP/IGES file states, mm for meshes)\n";
+CLI::Option* addUnitsOption(Arguments& args, const std::string& of, const std::string& byDefault) {
+  const std::string choices(lengthUnitChoices());
+  const CLI::Validator known(
+      [choices](std::string& text) -> std::string {
+        return parseLengthUnit(text) ? std::string()
+                                     : "expects " + choices + ", got '" + text + "'";
+      },
+      "UNIT");
+  return args
+      .option("--units", "U", "unit of " + of + ": " + choices + "\n(default: " + byDefault + ")")
+      ->check(known);
 }
 
 std::optional<ddfcam::LengthUnit> unitOption(const Arguments& args) {
   const std::optional<std::string> text = args.value("units");
   if (!text) return std::nullopt;
-  const std::optional<ddfcam::LengthUnit> unit = parseLengthUnit(*text);
-  if (!unit)
-    throw UsageError("--units expects " + std::string(lengthUnitChoices()) + ", got '" + *text +
-                     "'");
-  return unit;
+  return parseLengthUnit(*text);
 }
 
 bool warnIfOtherUnit(const std::filesystem::path& file, double fileDiagonal,

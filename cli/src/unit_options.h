@@ -14,14 +14,11 @@
 
 namespace ddfcam::cli {
 
-/// @brief The option spec of --units.
-inline const OptionSpec kUnitsOption{"units", '\0', true};
+/// @brief Adds --units U to @p args: "unit of <@p of>: mm, cm, m or in (default: <@p
+/// byDefault>)", checked against lengthUnitChoices().
+CLI::Option* addUnitsOption(Arguments& args, const std::string& of, const std::string& byDefault);
 
-/// @brief Help text line of --units, aligned at column @p column (0-based) like the others.
-std::string unitsHelpLine(int column);
-
-/// @brief The unit given with --units, or std::nullopt if absent.
-/// @throws UsageError for a unit parseLengthUnit does not know, listing lengthUnitChoices().
+/// @brief The unit given with --units (see addUnitsOption), or std::nullopt if absent.
 std::optional<ddfcam::LengthUnit> unitOption(const Arguments& args);
 
 /// @brief Prints "warning: <file> is <d> units across; if it is not in mm, pass --units (as m

@@ -103,17 +103,25 @@ constexpr std::size_t kBoxQueryFaceLimit = 256;
 
 void appendCandidates(const DisplacementField& ddf, const std::vector<int>& faces,
                       std::span<const Vec3> corners, PairGroups& g) {
+  std::vector<Eigen::AlignedBox3d> crusts;
+  crusts.reserve(faces.size());
+  Eigen::AlignedBox3d reach;
+  for (int f : faces) reach.extend(crusts.emplace_back(CrustHash::crustBox(ddf, f)));
+  // The crust is thin: most triangles of a fine tool mesh (a ball has ~200k) lie outside every
+  // crust box, and one test against their union drops them before the per-face tests.
+  std::vector<std::pair<int, Eigen::AlignedBox3d>> near;
   const std::size_t triangles = corners.size() / 3;
-  std::vector<Eigen::AlignedBox3d> triBoxes(triangles);
-  for (std::size_t t = 0; t < triangles; ++t)
-    for (int c = 0; c < 3; ++c) triBoxes[t].extend(corners[3 * t + c]);
-  for (int f : faces) {
-    const Eigen::AlignedBox3d crust = CrustHash::crustBox(ddf, f);
-    const detail::FaceCorners s = cornersOf(ddf, f);
-    for (std::size_t t = 0; t < triangles; ++t) {
-      if (!crust.intersects(triBoxes[t])) continue;
+  for (std::size_t t = 0; t < triangles; ++t) {
+    Eigen::AlignedBox3d box;
+    for (int c = 0; c < 3; ++c) box.extend(corners[3 * t + c]);
+    if (reach.intersects(box)) near.emplace_back(static_cast<int>(t), box);
+  }
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const detail::FaceCorners s = cornersOf(ddf, faces[i]);
+    for (const auto& [t, box] : near) {
+      if (!crusts[i].intersects(box)) continue;
       if (!mayMeetCrust(s, {corners[3 * t], corners[3 * t + 1], corners[3 * t + 2]})) continue;
-      g.pairs.emplace_back(f, static_cast<int>(t));
+      g.pairs.emplace_back(faces[i], t);
     }
   }
 }
@@ -128,10 +136,17 @@ PairGroups localize(const DisplacementField& ddf, const CrustHash& hash,
   if (faces.size() <= kBoxQueryFaceLimit) {
     appendCandidates(ddf, faces, corners, g);
   } else {
+    // A triangle outside the union of the nearby crust boxes meets no stubble (a hit lies in
+    // both boxes), so it needs no hash query; most of a fine tool mesh lies there.
+    Eigen::AlignedBox3d reach;
+    for (int f : faces) reach.extend(CrustHash::crustBox(ddf, f));
     const std::size_t triangles = corners.size() / 3;
     for (std::size_t t = 0; t < triangles; ++t) {
       if (progress && t % 4096 == 0) reportProgress(progress, 0.2 * t / triangles);
       const std::array<Vec3, 3> q = {corners[3 * t], corners[3 * t + 1], corners[3 * t + 2]};
+      Eigen::AlignedBox3d box(q[0]);
+      box.extend(q[1]).extend(q[2]);
+      if (!reach.intersects(box)) continue;
       hash.queryTriangle(q[0], q[1], q[2], faces);
       for (int f : faces)
         if (mayMeetCrust(cornersOf(ddf, f), q)) g.pairs.emplace_back(f, static_cast<int>(t));

@@ -192,7 +192,8 @@ AddPathCommand::AddPathCommand(Document& document, planning::ToolPath path,
 std::size_t AddPathCommand::memoryBytes() const {
   std::size_t bytes = sizeof(*this) + path_.name.capacity() +
                       path_.poses.capacity() * sizeof(planning::PathPose) +
-                      path_.passStarts.capacity() * sizeof(int);
+                      path_.passStarts.capacity() * sizeof(int) +
+                      planning::rawLinesBytes(path_);
   if (tool_) bytes += tool_->name.capacity();
   return bytes;
 }

@@ -25,7 +25,8 @@ ReplacePathCommand::ReplacePathCommand(Document& document, int index, planning::
 std::size_t ReplacePathCommand::memoryBytes() const {
   return sizeof(*this) + other_.name.capacity() +
          other_.poses.capacity() * sizeof(planning::PathPose) +
-         other_.passStarts.capacity() * sizeof(int);
+         other_.passStarts.capacity() * sizeof(int) +
+         planning::rawLinesBytes(other_);
 }
 
 Changes ReplacePathCommand::apply(planning::Project& project) {

@@ -5,10 +5,10 @@
 #include <ddfcam/error.h>
 #include <ddfcam/gui/console_dock.h>
 #include <ddfcam/gui/project_actions.h>
-#include <ddfcam/io/programs/cl_program_builder.h>
 #include <ddfcam/io/programs/machine_file.h>
 #include <ddfcam/io/programs/path_file.h>
 #include <ddfcam/planning/model/project.h>
+#include <ddfcam/planning/placement/cl_program_builder.h>
 
 #include <QDir>
 #include <QFileInfo>
@@ -31,9 +31,8 @@ bool dialectBelongs(PathExportFormat format, PathExportDialect dialect) {
   return true;  // CSV has no dialect; any value is ignored
 }
 
-QString unitKey(io::LengthUnit unit) {
-  return QString::fromUtf8(io::unitSymbol(unit).data(),
-                           static_cast<int>(io::unitSymbol(unit).size()));
+QString unitKey(LengthUnit unit) {
+  return QString::fromUtf8(unitSymbol(unit).data(), static_cast<int>(unitSymbol(unit).size()));
 }
 
 bool isCutter(planning::ToolKind kind) {
@@ -60,7 +59,7 @@ QString pathProblem(const planning::Project& project, const planning::ToolPath& 
                "%2, which is not one. Export it as CSV or APT.")
         .arg(quoted(path.name), quoted(tool.name));
   if (o.dialect != PathExportDialect::GCode3Axis || !o.machineFile.isEmpty()) return {};
-  const ddf::Vec3 spindle = io::spindleAxisInToolFrame(tool.kind);
+  const ddf::Vec3 spindle = planning::spindleAxisInToolFrame(tool.kind);
   for (std::size_t i = 0; i < path.poses.size(); ++i) {
     const ddf::Vec3 axis = (path.poses[i].pose.linear() * spindle).normalized();
     const double tiltDeg = std::acos(std::clamp(axis.z(), -1.0, 1.0)) * 180.0 / std::numbers::pi;
@@ -85,7 +84,7 @@ QString fromPath(const std::filesystem::path& path) {
 
 // Files of the programs: the chosen file for a single program, else one per program named
 // after it (as the CSV writer names its files), made unique.
-std::vector<std::filesystem::path> exportFiles(const std::vector<io::NamedProgram>& programs,
+std::vector<std::filesystem::path> exportFiles(const std::vector<planning::NamedProgram>& programs,
                                                const QString& filePath) {
   std::vector<std::filesystem::path> files;
   if (programs.size() == 1) return {toPath(filePath)};
@@ -162,16 +161,17 @@ QStringList exportPaths(const planning::Project& project, const PathExportOption
   const PathExportOptions o = normalisedExportOptions(options);
   if (const QString problem = pathExportProblem(project, o); !problem.isEmpty())
     throw InvalidInput(problem.toStdString());
-  io::ExportSelection selection;
+  planning::ExportSelection selection;
   selection.pointKind = o.point;
   selection.perRegion = o.grouping == PathExportGrouping::FilePerRegion;
   selection.paths = o.paths;
-  const std::vector<io::NamedProgram> programs = io::programsForExport(project, selection);
+  const std::vector<planning::NamedProgram> programs =
+      planning::programsForExport(project, selection);
   const std::vector<std::filesystem::path> files = exportFiles(programs, o.filePath);
   const io::PathWriteParams params = writeParams(o);
   QStringList written;
   for (std::size_t i = 0; i < programs.size(); ++i) {
-    const io::ClProgram& program = programs[i].program;
+    const planning::ClProgram& program = programs[i].program;
     // programsForExport numbers tools from 1 (project index + 1).
     const auto& tool = project.tools.at(static_cast<std::size_t>(program.toolNumber - 1));
     try {
@@ -227,8 +227,8 @@ PathExportOptions normalisedExportOptions(PathExportOptions o) {
   o.coordinateDecimals = std::clamp(o.coordinateDecimals, low, high);
   o.vectorDecimals = std::clamp(o.vectorDecimals, 6, 9);
   // APT's GOTO and G-code's programmed point are the tool reference (tip, centre).
-  if (o.format != PathExportFormat::Csv) o.point = io::ClPointKind::ToolReference;
-  if (o.unit == io::LengthUnit::Metre) o.unit = io::LengthUnit::Millimetre;
+  if (o.format != PathExportFormat::Csv) o.point = planning::ClPointKind::ToolReference;
+  if (o.unit == LengthUnit::Metre) o.unit = LengthUnit::Millimetre;
   return o;
 }
 
@@ -262,10 +262,9 @@ PathExportOptions loadExportOptions(QSettings& settings) {
   o.dialect = static_cast<PathExportDialect>(settings.value("dialect", int(o.dialect)).toInt());
   o.coordinateDecimals = settings.value("coordinateDecimals", o.coordinateDecimals).toInt();
   o.vectorDecimals = settings.value("vectorDecimals", o.vectorDecimals).toInt();
-  o.unit =
-      settings.value("unit").toString() == "in" ? io::LengthUnit::Inch : io::LengthUnit::Millimetre;
-  o.point = settings.value("point").toString() == "tool" ? io::ClPointKind::ToolReference
-                                                         : io::ClPointKind::Contact;
+  o.unit = settings.value("unit").toString() == "in" ? LengthUnit::Inch : LengthUnit::Millimetre;
+  o.point = settings.value("point").toString() == "tool" ? planning::ClPointKind::ToolReference
+                                                         : planning::ClPointKind::Contact;
   o.grouping = settings.value("perRegion", false).toBool() ? PathExportGrouping::FilePerRegion
                                                            : PathExportGrouping::OneFile;
   o.machineFile = settings.value("machineFile").toString();
@@ -285,7 +284,7 @@ void saveExportOptions(QSettings& settings, const PathExportOptions& o) {
   settings.setValue("coordinateDecimals", o.coordinateDecimals);
   settings.setValue("vectorDecimals", o.vectorDecimals);
   settings.setValue("unit", unitKey(o.unit));
-  settings.setValue("point", o.point == io::ClPointKind::ToolReference ? "tool" : "contact");
+  settings.setValue("point", o.point == planning::ClPointKind::ToolReference ? "tool" : "contact");
   settings.setValue("perRegion", o.grouping == PathExportGrouping::FilePerRegion);
   settings.setValue("machineFile", o.machineFile);
   settings.endGroup();

@@ -72,12 +72,11 @@ void PathExportDialog::buildForm(const PathExportOptions& initial) {
   dialect_ = makeCombo(this, "exportDialect", {});
   coordinateDecimals_ = named(new QSpinBox(this), "exportCoordinateDecimals");
   vectorDecimals_ = named(new QSpinBox(this), "exportVectorDecimals");
-  unit_ = makeCombo(
-      this, "exportUnit",
-      {{tr("mm"), int(io::LengthUnit::Millimetre)}, {tr("inch"), int(io::LengthUnit::Inch)}});
+  unit_ = makeCombo(this, "exportUnit",
+                    {{tr("mm"), int(LengthUnit::Millimetre)}, {tr("inch"), int(LengthUnit::Inch)}});
   point_ = makeCombo(this, "exportPoint",
-                     {{tr("contact point"), int(io::ClPointKind::Contact)},
-                      {tr("tool reference point"), int(io::ClPointKind::ToolReference)}});
+                     {{tr("contact point"), int(planning::ClPointKind::Contact)},
+                      {tr("tool reference point"), int(planning::ClPointKind::ToolReference)}});
   grouping_ = makeCombo(this, "exportGrouping",
                         {{tr("all paths in one file"), int(PathExportGrouping::OneFile)},
                          {tr("one file per region"), int(PathExportGrouping::FilePerRegion)}});
@@ -204,8 +203,8 @@ PathExportOptions PathExportDialog::options() const {
     o.dialect = static_cast<PathExportDialect>(dialect_->currentData().toInt());
   o.coordinateDecimals = coordinateDecimals_->value();
   o.vectorDecimals = vectorDecimals_->value();
-  o.unit = static_cast<io::LengthUnit>(unit_->currentData().toInt());
-  o.point = static_cast<io::ClPointKind>(point_->currentData().toInt());
+  o.unit = static_cast<LengthUnit>(unit_->currentData().toInt());
+  o.point = static_cast<planning::ClPointKind>(point_->currentData().toInt());
   o.grouping = static_cast<PathExportGrouping>(grouping_->currentData().toInt());
   for (int i = 0; i < paths_->count(); ++i)
     if (paths_->item(i)->checkState() == Qt::Checked) o.paths.push_back(i);

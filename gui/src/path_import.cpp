@@ -7,9 +7,9 @@
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/document_command.h>
 #include <ddfcam/gui/project_actions.h>
-#include <ddfcam/io/programs/cutter_tool.h>
 #include <ddfcam/io/programs/path_file.h>
 #include <ddfcam/planning/model/project.h>
+#include <ddfcam/planning/placement/cutter_tool.h>
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -38,13 +38,13 @@ namespace ddfcam::gui {
 
 namespace {
 
-QString unitText(io::LengthUnit unit) {
-  const std::string_view name = io::unitSymbol(unit);
+QString unitText(LengthUnit unit) {
+  const std::string_view name = unitSymbol(unit);
   return QString::fromUtf8(name.data(), static_cast<int>(name.size()));
 }
 
 void logMessages(ConsoleDock* console, const QString& file,
-                 const std::vector<io::ClMessage>& messages) {
+                 const std::vector<planning::ClMessage>& messages) {
   if (!console) return;
   const QString name = QFileInfo(file).fileName();
   for (const auto& m : messages)
@@ -56,14 +56,14 @@ void logMessages(ConsoleDock* console, const QString& file,
                                                   : name + ": " + QString::fromStdString(m.text));
 }
 
-QString programSummary(const QString& file, const io::ClProgram& program) {
+QString programSummary(const QString& file, const planning::ClProgram& program) {
   return QObject::tr("%1: %2 points, %3 path(s), %4, %5 points%6")
       .arg(QFileInfo(file).fileName())
       .arg(program.points.size())
       .arg(program.pathCount())
       .arg(program.multiAxis() ? QObject::tr("5-axis") : QObject::tr("3-axis"))
-      .arg(program.pointKind == io::ClPointKind::Contact ? QObject::tr("contact")
-                                                         : QObject::tr("tool reference"))
+      .arg(program.pointKind == planning::ClPointKind::Contact ? QObject::tr("contact")
+                                                               : QObject::tr("tool reference"))
       .arg(program.warnings.empty()
                ? QString()
                : QObject::tr(", %1 warnings (see the console)").arg(program.warnings.size()));
@@ -101,7 +101,7 @@ QComboBox* toolChoice(const PathImportRequest& request, int toolIndex, QWidget* 
 }
 
 // The console line of an import: poses, the meanings used and why, distances that agree.
-QString importedSummary(const QString& file, const io::ImportedPath& imported) {
+QString importedSummary(const QString& file, const planning::ImportedPath& imported) {
   const int poses = static_cast<int>(imported.path.poses.size());
   const QString onPart =
       imported.maxOnPartContactDistanceMm
@@ -134,7 +134,7 @@ QComboBox* meaningChoice(const std::vector<std::pair<Meaning, QString>>& items, 
 std::pair<QComboBox*, QComboBox*> meaningChoices(const PathImportRequest& request,
                                                  const PathImportOptions& initial,
                                                  QWidget* parent) {
-  using V = io::PathVectorMeaning;
+  using V = planning::PathVectorMeaning;
   auto* vectors =
       meaningChoice<V>({{V::Auto, QObject::tr("detect from the part")},
                         {V::ToolAxis, QObject::tr("tool axis (tip to holder)")},
@@ -142,8 +142,8 @@ std::pair<QComboBox*, QComboBox*> meaningChoices(const PathImportRequest& reques
                         {V::SurfaceNormal, QObject::tr("surface normal (out of the part)")}},
                        initial.vectors, "importVectors", parent);
   vectors->setEnabled(request.program.multiAxis());
-  using P = io::PathPointMeaning;
-  const QString declared = request.program.pointKind == io::ClPointKind::Contact
+  using P = planning::PathPointMeaning;
+  const QString declared = request.program.pointKind == planning::ClPointKind::Contact
                                ? QObject::tr("as the file says (contacts)")
                                : QObject::tr("as the file says (tool tips or centres)");
   auto* points =
@@ -156,21 +156,21 @@ std::pair<QComboBox*, QComboBox*> meaningChoices(const PathImportRequest& reques
 }
 
 // Places the program and adds the path (and a new tool) as one undo step.
-void placeAndAdd(const QString& file, const io::ClProgram& program,
+void placeAndAdd(const QString& file, const planning::ClProgram& program,
                  const PathImportOptions& options, Document& document, ConsoleDock* console) {
   const planning::Project& project = document.project();
   std::optional<planning::Tool> newTool;
   if (options.toolIndex < 0) {
     if (!program.cutter) throw InvalidInput("the file has no CUTTER record to make a tool from");
-    newTool = io::toolFromCutter(*program.cutter, program.toolName.empty()
-                                                      ? QFileInfo(file).baseName().toStdString()
-                                                      : program.toolName);
+    newTool = planning::toolFromCutter(
+        *program.cutter,
+        program.toolName.empty() ? QFileInfo(file).baseName().toStdString() : program.toolName);
   } else if (options.toolIndex >= static_cast<int>(project.tools.size())) {
     throw InvalidInput("the project has no tool " + std::to_string(options.toolIndex + 1));
   }
   const planning::Tool& tool =
       newTool ? *newTool : project.tools[static_cast<std::size_t>(options.toolIndex)];
-  io::PlaceProgramParams params;
+  planning::PlaceProgramParams params;
   params.actualUnit = options.unit;
   params.transform = importTransform(options);
   params.includeRapids = options.includeRapids;
@@ -178,7 +178,7 @@ void placeAndAdd(const QString& file, const io::ClProgram& program,
   params.toolIndex = newTool ? static_cast<int>(project.tools.size()) : options.toolIndex;
   params.vectorMeaning = options.vectors;
   params.pointMeaning = options.points;
-  io::ImportedPath imported = io::placeProgram(program, tool, *project.part, params);
+  planning::ImportedPath imported = planning::placeProgram(program, tool, *project.part, params);
   logMessages(console, file, imported.warnings);
   const QString summary = importedSummary(file, imported);
   document.push(std::make_unique<AddPathCommand>(document, std::move(imported.path), newTool));
@@ -238,11 +238,11 @@ PathImportOptions initialImportOptions(const PathImportRequest& request) {
 bool importPathFile(const QString& file, Document& document, const WorkbenchDialogs& dialogs,
                     ConsoleDock* console) {
   const QString title = QObject::tr("Import %1").arg(QFileInfo(file).fileName());
-  std::optional<io::ClProgram> program;
+  std::optional<planning::ClProgram> program;
   const bool read = runUserAction(dialogs.error, title, [&] {
     if (!document.project().part)
       throw InvalidInput("open a part first: an imported path is placed on the part's surface");
-    program = io::readPathFile(std::filesystem::path(file.toStdU16String()));
+    program = io::readPathFile(std::filesystem::path(file.toStdU16String())).program;
   });
   if (!read) return false;
   logMessages(console, file, program->warnings);
@@ -266,7 +266,7 @@ PathImportDialog::PathImportDialog(const PathImportRequest& request,
   form->addRow(summary);
   unit_ = new QComboBox(this);
   unit_->setObjectName("importUnit");
-  for (auto unit : {io::LengthUnit::Millimetre, io::LengthUnit::Inch, io::LengthUnit::Metre})
+  for (auto unit : {LengthUnit::Millimetre, LengthUnit::Inch, LengthUnit::Metre})
     unit_->addItem(unitText(unit), int(unit));
   unit_->setCurrentIndex(unit_->findData(int(initial.unit)));
   form->addRow(tr("Unit of the file (read: %1):").arg(unitText(request.program.sourceUnit)), unit_);
@@ -299,7 +299,7 @@ PathImportDialog::PathImportDialog(const PathImportRequest& request,
 
 PathImportOptions PathImportDialog::options() const {
   PathImportOptions o;
-  o.unit = static_cast<io::LengthUnit>(unit_->currentData().toInt());
+  o.unit = static_cast<LengthUnit>(unit_->currentData().toInt());
   for (int i = 0; i < 3; ++i) {
     o.translationMm[i] = translation_[i]->value();
     o.rotationDeg[i] = rotation_[i]->value();
@@ -307,8 +307,8 @@ PathImportOptions PathImportDialog::options() const {
   o.toolIndex = tool_->count() > 0 ? tool_->currentData().toInt() : 0;
   o.includeRapids = rapids_->isChecked();
   o.name = name_->text();
-  o.vectors = static_cast<io::PathVectorMeaning>(vectors_->currentData().toInt());
-  o.points = static_cast<io::PathPointMeaning>(points_->currentData().toInt());
+  o.vectors = static_cast<planning::PathVectorMeaning>(vectors_->currentData().toInt());
+  o.points = static_cast<planning::PathPointMeaning>(points_->currentData().toInt());
   return o;
 }
 

@@ -8,6 +8,8 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <optional>
+
 namespace ddfcam::gui {
 
 PathLengths pathLengths(const planning::ToolPath& path) {
@@ -54,15 +56,15 @@ void PathListWidget::refresh(const planning::Project& project) {
     PathLengths total;
     for (int r = 0; r < count; ++r) {
       PathLengths l = pathLengths(project.paths[r]);
-      const auto linked = linkedIdle_.find(project.paths[r].name);
-      if (linked != linkedIdle_.end()) l.idleMm = linked->second;
+      const std::optional<double>& linked = project.paths[r].linkedIdleMm;
+      if (linked) l.idleMm = *linked;
       total.lines += l.lines;
       total.cuttingMm += l.cuttingMm;
       total.idleMm += l.idleMm;
       const QStringList cells = {QString::fromStdString(project.paths[r].name),
                                  QString::number(l.lines), QString::number(l.cuttingMm, 'f', 1),
                                  QString::number(l.idleMm, 'f', 1) +
-                                     (linked != linkedIdle_.end() ? tr(" (linked)") : QString())};
+                                     (linked ? tr(" (linked)") : QString())};
       for (int c = 0; c < cells.size(); ++c) {
         auto* item = new QTableWidgetItem(cells[c]);
         if (c > 0) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);

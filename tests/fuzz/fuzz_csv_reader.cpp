@@ -11,8 +11,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                                ddfcam::io::LengthUnit::Inch,
                                                ddfcam::io::LengthUnit::Metre};
   params.unitIfUnstated = kUnits[size % 3];
-  params.kindIfUnstated =
-      size / 3 % 2 ? ddfcam::io::ClPointKind::Contact : ddfcam::io::ClPointKind::ToolReference;
+  params.kindIfUnstated = size / 3 % 2 ? ddfcam::planning::ClPointKind::Contact
+                                       : ddfcam::planning::ClPointKind::ToolReference;
   return ddfcam::fuzz::fuzzReader(data, size, [&params](std::string_view text) {
     return ddfcam::io::decodeToolPathCsv(text, ddfcam::fuzz::kSourceName, params);
   });

@@ -59,7 +59,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         .write(text.data(), static_cast<std::streamsize>(text.size()));
     // Messages name the file; the contract check expects them to start with kSourceName.
     try {
-      return ddfcam::io::readPathFile(file);
+      return ddfcam::io::readPathFile(file).program;
     } catch (const ddfcam::Error& e) {
       const std::string message = e.what();
       for (const std::string& name : {file.string(), file.filename().string()})

@@ -95,8 +95,8 @@ std::filesystem::path fsPath(const QString& file) {
   return std::filesystem::path(file.toStdU16String());
 }
 
-std::vector<io::ClPoint> cutPoints(const io::ClProgram& program) {
-  std::vector<io::ClPoint> cuts;
+std::vector<planning::ClPoint> cutPoints(const planning::ClProgram& program) {
+  std::vector<planning::ClPoint> cuts;
   for (const auto& p : program.points)
     if (p.move == planning::MoveKind::Cut) cuts.push_back(p);
   return cuts;
@@ -186,8 +186,8 @@ class PathExportTest : public QObject {
     QCOMPARE(files.size(), 2);
     std::size_t compared = 0;
     for (const QString& name : files) {
-      const io::ClProgram program = io::readToolPathCsv(fsPath(dir_.filePath(name)));
-      QCOMPARE(program.pointKind, io::ClPointKind::Contact);
+      const planning::ClProgram program = io::readToolPathCsv(fsPath(dir_.filePath(name)));
+      QCOMPARE(program.pointKind, planning::ClPointKind::Contact);
       const auto cuts = cutPoints(program);
       const bool roll = cuts.size() == project().paths[0].poses.size();
       std::vector<planning::PathPose> poses = project().paths[roll ? 0 : 1].poses;
@@ -206,7 +206,7 @@ class PathExportTest : public QObject {
     for (const auto dialect : {PathExportDialect::AptStandard, PathExportDialect::AptNx}) {
       PathExportOptions o = options(PathExportFormat::Apt, "balls.apt", {1, 2});
       o.dialect = dialect;
-      o.unit = io::LengthUnit::Inch;
+      o.unit = ddfcam::LengthUnit::Inch;
       o.coordinateDecimals = 5;
       o.vectorDecimals = 8;
       QStringList written;
@@ -217,7 +217,7 @@ class PathExportTest : public QObject {
       const QString text = readText(written.front());
       QVERIFY(text.contains("UNITS/INCHES"));
       QVERIFY(text.contains(dialect == PathExportDialect::AptNx ? "FEDRAT/IPM," : ",IPM"));
-      const io::ClProgram program = io::readApt(fsPath(written.front()));
+      const planning::ClProgram program = io::readApt(fsPath(written.front()));
       // APT has no link moves: the retract and approach between the two paths read back as
       // feed moves (2 points), the lift's rapid as a rapid; each path is one pass.
       const auto cuts = cutPoints(program);
@@ -315,7 +315,7 @@ class PathExportTest : public QObject {
     auto* format = dialog.findChild<QComboBox*>("exportFormat");
     format->setCurrentIndex(format->findData(int(PathExportFormat::GCode)));
     QVERIFY(dialog.options().filePath.endsWith("dialog.ngc"));
-    QCOMPARE(dialog.options().point, io::ClPointKind::ToolReference);
+    QCOMPARE(dialog.options().point, planning::ClPointKind::ToolReference);
     QVERIFY(dialog.problem().contains("cutters"));  // the roll path is checked
     dialog.findChild<QListWidget*>("exportPaths")->item(0)->setCheckState(Qt::Unchecked);
     auto* dialect = dialog.findChild<QComboBox*>("exportDialect");

@@ -166,7 +166,7 @@ class PathImportTest : public QObject {
     const std::size_t before = project().paths.size();
     PathImportOptions chosen;
     adjust_ = [&](PathImportOptions& o) {
-      QCOMPARE(o.unit, io::LengthUnit::Millimetre);  // as read
+      QCOMPARE(o.unit, ddfcam::LengthUnit::Millimetre);  // as read
       o.toolIndex = 1;
       o.translationMm = Vec3(1.0, 2.0, 3.0);
       o.rotationDeg = Vec3(0.0, 0.0, 90.0);
@@ -200,7 +200,7 @@ class PathImportTest : public QObject {
     QVERIFY(writeText(file, csvText()));
     adjust_ = [](PathImportOptions& o) {
       o.toolIndex = 1;
-      o.unit = io::LengthUnit::Inch;
+      o.unit = ddfcam::LengthUnit::Inch;
     };
     importByMenu(file);
     QVERIFY2(script_.errors.isEmpty(), qPrintable(script_.errors.join('\n')));
@@ -274,7 +274,7 @@ class PathImportTest : public QObject {
     const QString file = sharedFile();
     QVERIFY2(QFile::exists(file), qPrintable(file));
     // Independent count: the reader's non-rapid points (arcs interpolated).
-    const io::ClProgram program = io::readApt(std::filesystem::path(file.toStdString()));
+    const planning::ClProgram program = io::readApt(std::filesystem::path(file.toStdString()));
     std::size_t expected = 0;
     for (const auto& p : program.points)
       if (p.move != planning::MoveKind::Rapid) ++expected;
@@ -309,10 +309,11 @@ class PathImportTest : public QObject {
     QVERIFY(writeText(file, robotCsv(points, normals)));
     const std::size_t paths = project().paths.size();
     // Default (detect from the part): approach directions, the ball's axis out of the part.
-    for (const auto vectors : {io::PathVectorMeaning::Auto, io::PathVectorMeaning::ToolAxis}) {
+    for (const auto vectors :
+         {planning::PathVectorMeaning::Auto, planning::PathVectorMeaning::ToolAxis}) {
       adjust_ = [&](PathImportOptions& o) {
-        QCOMPARE(o.vectors, io::PathVectorMeaning::Auto);
-        QCOMPARE(o.points, io::PathPointMeaning::Auto);
+        QCOMPARE(o.vectors, planning::PathVectorMeaning::Auto);
+        QCOMPARE(o.points, planning::PathPointMeaning::Auto);
         o.toolIndex = 1;  // ball R2
         o.vectors = vectors;
       };
@@ -320,7 +321,7 @@ class PathImportTest : public QObject {
       QVERIFY2(script_.errors.isEmpty(), qPrintable(script_.errors.join('\n')));
       const planning::ToolPath& path = project().paths.back();
       QCOMPARE(path.poses.size(), points.size());
-      const double sign = vectors == io::PathVectorMeaning::Auto ? 1.0 : -1.0;
+      const double sign = vectors == planning::PathVectorMeaning::Auto ? 1.0 : -1.0;
       for (std::size_t i = 0; i < points.size(); ++i) {
         QVERIFY((path.poses[i].pose.translation() - points[i]).norm() < 1e-6);
         QVERIFY(sign * (path.poses[i].pose.linear() * Vec3::UnitZ()).dot(normals[i]) > 0.999);
@@ -338,25 +339,26 @@ class PathImportTest : public QObject {
   void dialogShowsTheFile() {
     const QString file = dir_.filePath("dialog.apt");
     QVERIFY(writeText(file, kApt));
-    const io::ClProgram program = io::readApt(std::filesystem::path(file.toStdString()));
+    const planning::ClProgram program = io::readApt(std::filesystem::path(file.toStdString()));
     const ddfcam::gui::PathImportRequest request{file, program, project()};
     const PathImportOptions initial = ddfcam::gui::initialImportOptions(request);
     ddfcam::gui::PathImportDialog dialog(request, initial, window_.get());
     dialog.show();
     QVERIFY(QTest::qWaitForWindowExposed(&dialog));
     const PathImportOptions shown = dialog.options();
-    QCOMPARE(shown.unit, io::LengthUnit::Millimetre);
+    QCOMPARE(shown.unit, ddfcam::LengthUnit::Millimetre);
     QCOMPARE(shown.toolIndex, 0);
     QCOMPARE(shown.name, QString("GX TEST"));
-    QCOMPARE(shown.vectors, io::PathVectorMeaning::Auto);
-    QCOMPARE(shown.points, io::PathPointMeaning::Auto);
+    QCOMPARE(shown.vectors, planning::PathVectorMeaning::Auto);
+    QCOMPARE(shown.points, planning::PathPointMeaning::Auto);
     auto* vectors = dialog.findChild<QComboBox*>("importVectors");
     auto* points = dialog.findChild<QComboBox*>("importPoints");
     QVERIFY(vectors && points);
-    vectors->setCurrentIndex(vectors->findData(int(io::PathVectorMeaning::ApproachDirection)));
-    points->setCurrentIndex(points->findData(int(io::PathPointMeaning::Contact)));
-    QCOMPARE(dialog.options().vectors, io::PathVectorMeaning::ApproachDirection);
-    QCOMPARE(dialog.options().points, io::PathPointMeaning::Contact);
+    vectors->setCurrentIndex(
+        vectors->findData(int(planning::PathVectorMeaning::ApproachDirection)));
+    points->setCurrentIndex(points->findData(int(planning::PathPointMeaning::Contact)));
+    QCOMPARE(dialog.options().vectors, planning::PathVectorMeaning::ApproachDirection);
+    QCOMPARE(dialog.options().points, planning::PathPointMeaning::Contact);
     ddfcam::test::dumpFrame(dialog.grab().toImage(), "path_import_dialog");
   }
 

@@ -15,6 +15,7 @@
 #include <ddfcam/planning/simulation/workpiece.h>
 
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QRegularExpression>
 #include <QScrollArea>
@@ -86,6 +87,7 @@ class SimulationOptionsTest : public ddfcam::test::WorkbenchTest {
   void sweptCutsBetweenCoarsePoses();
   void correctPenetrationsInABore();
   void prestonRemovesTheConservedVolume();
+  void prestonFeedIsThePathsFeed();
 };
 
 void SimulationOptionsTest::raiseByAllowanceOnAPlane() {
@@ -274,6 +276,38 @@ void SimulationOptionsTest::prestonRemovesTheConservedVolume() {
   QVERIFY(raisePanel("simulation"));
   auto* scroll = panel().findChild<QScrollArea*>("simulationScroll");
   ddfcam::test::dumpFrame(scroll->widget()->grab().toImage(), "simulation_options_panel");
+}
+
+void SimulationOptionsTest::prestonFeedIsThePathsFeed() {
+  // One feed: the one exported programs are written with (ToolPath::feedMmPerMin) is the one
+  // the panel shows and Preston removal uses (it showed 600 mm/min whatever the path's feed).
+  ddfcam::planning::ToolPath path = rollAlongY(0.5, 0.0);
+  path.feedMmPerMin = 1500.0;
+  load(projectOf(plane(), {path}));
+  auto* feed = f_.window->findChild<QDoubleSpinBox*>("prestonFeedSpin");
+  QCOMPARE(feed->value(), 1500.0);
+  panel().options().setRemovalModel(RemovalModel::Preston);
+  const ddfcam::planning::PrestonParams shown = panel().options().prestonParams();
+  const std::vector<float> before = project().part->allHeights();
+  QVERIFY(panel().simulatePath(0));
+  waitOk();
+  // Oracle as above: cross-section K_p F v_s / v_f times the 20 mm path.
+  const double expected = shown.prestonCoefficientMm2PerN * shown.forceN *
+                          shown.surfaceSpeedMmPerS / (1500.0 / 60.0) * 20.0;
+  const double measured =
+      ddfcam::planning::volumeBetween(*project().part, before, project().part->allHeights());
+  QVERIFY2(std::abs(measured - expected) < 0.05 * expected,
+           qPrintable(QString("%1 vs %2 mm³").arg(measured).arg(expected)));
+  undo().undo();
+  // Editing the feed edits the selected path: one undo step, saved with the path.
+  const int step = undo().index();
+  feed->setValue(750.0);
+  QCOMPARE(project().paths[0].feedMmPerMin, 750.0);
+  QCOMPARE(undo().index(), step + 1);
+  undo().undo();
+  QCOMPARE(project().paths[0].feedMmPerMin, 1500.0);
+  QCOMPARE(feed->value(), 1500.0);
+  panel().options().setRemovalModel(RemovalModel::Rigid);
 }
 
 QTEST_MAIN(SimulationOptionsTest)

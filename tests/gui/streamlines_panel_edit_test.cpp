@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Streamlines panel under Xvfb: the smoothing preview and its undo step, fairing, the path list
-// and drawn strokes, on the cylinder.
+// Streamlines panel under Xvfb: the smoothing preview and its undo step, fairing, the path list,
+// drawn strokes and the raw lines kept with a path, on the cylinder.
 #include "frame_checks.h"
 #include "streamlines_panel_fixture.h"
 
@@ -11,7 +11,9 @@
 #include <ddfcam/gui/panels/streamlines_panel.h>
 #include <ddfcam/gui/part_scene.h>
 #include <ddfcam/gui/part_view.h>
+#include <ddfcam/gui/path_commands.h>
 #include <ddfcam/gui/path_list.h>
+#include <ddfcam/gui/project_actions.h>
 #include <ddfcam/gui/vtk_error_monitor.h>
 #include <ddfcam/gui/vtk_view.h>
 #include <ddfcam/planning/lines/streamline.h>
@@ -46,7 +48,20 @@ class StreamlinesPanelEditTest : public ddfcam::test::StreamlinesPanelTestBase {
   void fairingIsOneUndoStepWithinTheDeviation();
   void pathListShowsCountsAndLengths();
   void dragDrawsAStrokeTheFieldFollows();
+  void planningResultsLiveWithThePath();
 };
+
+namespace {
+
+/// Pushes the undoable replacement of path @p index by a copy named @p name, as a rename does.
+void renamePath(ddfcam::gui::Document& document, int index, const std::string& name) {
+  ddfcam::planning::ToolPath renamed = document.project().paths.at(index);
+  renamed.name = name;
+  document.push(std::make_unique<ddfcam::gui::ReplacePathCommand>(
+      document, index, std::move(renamed), QString("Rename path to '%1'").arg(name.c_str())));
+}
+
+}  // namespace
 
 void StreamlinesPanelEditTest::smoothingPreviewIsLiveAndApplyIsOneUndoStep() {
   load(cylinderProject());
@@ -215,6 +230,99 @@ void StreamlinesPanelEditTest::dragDrawsAStrokeTheFieldFollows() {
   ddfcam::test::dumpFrame(view.renderImage(), "streamlines_drawn_stroke");
   panel().clearStrokes();
   QVERIFY(!scene().hasOverlay(StreamlinesPanel::kStrokeOverlay));
+}
+
+void StreamlinesPanelEditTest::planningResultsLiveWithThePath() {
+  load(cylinderProject());
+  ddfcam::gui::Document& document = f_.window->document();
+  QUndoStack& undo = *document.undoStack();
+  ddfcam::ddf::SurfaceLocation seed;
+  seed.face = 0;
+  seed.bary = Vec3(1.0, 1.0, 1.0) / 3.0;
+  QVERIFY(panel().seedAt(seed));
+  waitOk();
+  QCOMPARE(project().paths.size(), std::size_t{1});
+  const ddfcam::planning::ToolPath planned = project().paths.front();
+  // The path holds its line as traced: a circle of the cylinder (analytic), one per pass.
+  QCOMPARE(planned.rawLines.size(), std::size_t{1});
+  QCOMPARE(planned.rawLines.size(), planned.passStarts.size());
+  QVERIFY(!planned.linkedIdleMm);  // a single line is not linked
+  const auto raw = planned.rawLines.front().polyline();
+  QVERIFY(raw.size() > 50);
+  for (const Vec3& p : raw)  // on the DDF of the cylinder, as the placed contacts are
+    QVERIFY2(std::abs(std::hypot(p.x(), p.y()) - kRadius) < 2e-3,
+             qPrintable(QString::number(std::hypot(p.x(), p.y()) - kRadius)));
+
+  // Renamed, the path is still smoothed from its raw line (by name it no longer was).
+  renamePath(document, 0, "renamed circle");
+  QCOMPARE(project().paths.front().rawLines, planned.rawLines);
+  for (const int k : {8, 3}) {
+    panel().setSmoothingWindow(k);
+    QVERIFY(panel().applySmoothing());
+    const ddfcam::planning::ToolPath& smoothed = project().paths.front();
+    QCOMPARE(smoothed.name, std::string("renamed circle"));
+    QCOMPARE(smoothed.rawLines, planned.rawLines);  // carried over: smoothing again starts here
+    // Each smoothing is of the raw line, not of the previous result: the moving average of
+    // the raw points put back radially on the cylinder.
+    const auto contacts = passContacts(smoothed).front();
+    const auto expected = ddfcam::planning::smoothMovingAverage(raw, k);
+    QCOMPARE(contacts.size(), expected.size());
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      const Vec3 e = expected[i];
+      const double re = std::hypot(e.x(), e.y());
+      QVERIFY((contacts[i] - Vec3(e.x() * kRadius / re, e.y() * kRadius / re, e.z())).norm() <
+              2e-3);
+    }
+  }
+  panel().setSmoothingWindow(0);
+
+  // A linked family keeps its linking's idle length through a rename.
+  panel().setFieldSource(FlowFieldSource::MinCurvatureDirection);
+  auto& view = *f_.window->view();
+  view.viewFrom(ddfcam::gui::ViewDirection::PlusX);
+  QTest::mouseClick(&view, Qt::LeftButton, Qt::NoModifier, view.rect().center());
+  QVERIFY(panel().seedFamily());
+  waitOk();
+  QCOMPARE(project().paths.size(), std::size_t{2});
+  const ddfcam::planning::ToolPath family = project().paths[1];
+  QVERIFY(family.linkedIdleMm.has_value());
+  QCOMPARE(family.rawLines.size(), family.passStarts.size());
+  QTableWidget& table = *panel().pathList().table();
+  const QString idle = table.item(1, 3)->text();
+  QCOMPARE(idle, QString::number(*family.linkedIdleMm, 'f', 1) + " (linked)");
+  renamePath(document, 1, "renamed family");
+  QCOMPARE(table.item(1, 0)->text(), QString("renamed family"));
+  QCOMPARE(table.item(1, 3)->text(), idle);
+  QCOMPARE(project().paths[1].rawLines, family.rawLines);
+
+  // Saved and opened again, both paths have them.
+  const QString file = f_.dir.filePath("planned.ddfproj");
+  QVERIFY(f_.window->projectActions().saveAs(file));
+  const ddfcam::planning::Project saved = project();
+  QVERIFY(f_.window->openPath(file));
+  waitOk();
+  QVERIFY(ddfcam::planning::projectsEqual(project(), saved));
+  QCOMPARE(project().paths[0].rawLines, planned.rawLines);
+  QCOMPARE(project().paths[1].linkedIdleMm, family.linkedIdleMm);
+  QCOMPARE(panel().pathList().table()->item(1, 3)->text(), idle);
+  panel().pathList().selectPath(0);
+  panel().setSmoothingWindow(3);
+  QVERIFY(panel().applySmoothing());
+  QCOMPARE(project().paths[0].rawLines, planned.rawLines);
+  panel().setSmoothingWindow(0);
+
+  // Undo back to before the planning removes the paths and their lines; redo restores them.
+  load(cylinderProject());
+  panel().setFieldSource(FlowFieldSource::MaxCurvatureDirection);  // the circle again
+  QVERIFY(panel().seedAt(seed));
+  waitOk();
+  QCOMPARE(project().paths.front().rawLines, planned.rawLines);
+  QVERIFY(undo.canUndo());
+  undo.undo();
+  QVERIFY(project().paths.empty());
+  undo.redo();
+  QCOMPARE(project().paths.size(), std::size_t{1});
+  QCOMPARE(project().paths.front().rawLines, planned.rawLines);
 }
 
 QTEST_MAIN(StreamlinesPanelEditTest)

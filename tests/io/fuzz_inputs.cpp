@@ -220,10 +220,11 @@ std::string str(const ddf::Vec3& v) {
 
 }  // namespace
 
-std::optional<std::string> programViolation(const io::ClProgram& program, std::string_view text) {
+std::optional<std::string> programViolation(const planning::ClProgram& program,
+                                            std::string_view text) {
   const int lines = lineCount(text);
   for (std::size_t p = 0; p < program.points.size(); ++p) {
-    const io::ClPoint& point = program.points[p];
+    const planning::ClPoint& point = program.points[p];
     const std::string where =
         "point " + std::to_string(p) + " (line " + std::to_string(point.sourceLine) + "): ";
     if (!finite(point.positionMm)) return where + "position not finite: " + str(point.positionMm);

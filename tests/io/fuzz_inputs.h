@@ -2,7 +2,7 @@
 // ddfcam tests: deterministic mutations of path-file texts and the reader contract they check.
 #pragma once
 
-#include <ddfcam/io/programs/cl_program.h>
+#include <ddfcam/planning/placement/cl_program.h>
 
 #include <cstdint>
 #include <optional>
@@ -59,7 +59,8 @@ std::optional<long long> lineNumberIn(std::string_view message);
 /// @brief Why @p program read from @p text breaks the ClProgram contract, or nothing: finite
 /// positions, unit axes and normals, finite non-negative feeds, non-negative path and point
 /// indices, source lines within the text.
-std::optional<std::string> programViolation(const io::ClProgram& program, std::string_view text);
+std::optional<std::string> programViolation(const planning::ClProgram& program,
+                                            std::string_view text);
 
 /// @brief Results that are not a ClProgram (older reader signatures) have no checked contract.
 template <class Result>

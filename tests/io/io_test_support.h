@@ -4,7 +4,7 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/error.h>
-#include <ddfcam/io/programs/cl_program.h>
+#include <ddfcam/planning/placement/cl_program.h>
 
 #include <gtest/gtest.h>
 
@@ -40,10 +40,10 @@ inline void expectBitwiseEqual(const ddf::DisplacementField& a, const ddf::Displ
 
 /// The tool axis in force at each point of @p program: its own, else the last one given
 /// before it (APT's axis is modal); none before the first.
-inline std::vector<std::optional<ddf::Vec3>> axesInForce(const io::ClProgram& program) {
+inline std::vector<std::optional<ddf::Vec3>> axesInForce(const planning::ClProgram& program) {
   std::vector<std::optional<ddf::Vec3>> axes;
   std::optional<ddf::Vec3> last;
-  for (const io::ClPoint& p : program.points) {
+  for (const planning::ClPoint& p : program.points) {
     if (p.axis) last = p.axis;
     axes.push_back(last);
   }

@@ -25,7 +25,7 @@ namespace {
 
 const std::string kSource = "fuzzed.txt";
 
-using Reader = std::function<io::ClProgram(std::string_view, const std::string&)>;
+using Reader = std::function<planning::ClProgram(std::string_view, const std::string&)>;
 
 /// One reader under test: its format, how to call it, and shared files whose heads seed it.
 struct ReaderCase {
@@ -107,7 +107,7 @@ void readOne(const ReaderCase& reader, const std::string& text, FuzzTally& tally
   const auto start = std::chrono::steady_clock::now();
   std::optional<std::string> broken;
   try {
-    const io::ClProgram program = reader.read(text, kSource);
+    const planning::ClProgram program = reader.read(text, kSource);
     ++tally.accepted;
     broken = programViolation(program, text);
   } catch (const Error& e) {
@@ -132,7 +132,7 @@ TEST_P(ReaderFuzz, HandWrittenSeedsParse) {
   const ReaderCase& reader = GetParam();
   for (const std::string& seed : builtinSeeds(reader.format)) {
     try {
-      const io::ClProgram program = reader.read(seed, kSource);
+      const planning::ClProgram program = reader.read(seed, kSource);
       EXPECT_FALSE(program.points.empty()) << escaped(seed);
       const auto broken = programViolation(program, seed);
       EXPECT_FALSE(broken) << *broken << "\n" << escaped(seed);

@@ -26,7 +26,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using Reader = std::function<io::ClProgram(std::string_view, const std::string&)>;
+using Reader = std::function<planning::ClProgram(std::string_view, const std::string&)>;
 
 const fs::path kRegressions = fs::path(DDFCAM_SOURCE_DIR) / "tests" / "fuzz" / "regressions";
 
@@ -40,7 +40,8 @@ const std::map<std::string, Reader>& readers() {
       {"fanuc_ls",
        [](std::string_view t, const std::string& n) { return io::decodeFanucLs(t, n); }},
       // The file keeps its own extension; readPathFile() detects the format from it.
-      {"path_file", [](std::string_view, const std::string& n) { return io::readPathFile(n); }},
+      {"path_file",
+       [](std::string_view, const std::string& n) { return io::readPathFile(n).program; }},
   };
   return map;
 }
@@ -94,7 +95,7 @@ TEST_P(ReaderRegressions, KeepsTheReaderContract) {
   const std::string name = r.file.string();
   const auto start = std::chrono::steady_clock::now();
   try {
-    const io::ClProgram program = reader->second(text, name);
+    const planning::ClProgram program = reader->second(text, name);
     EXPECT_FALSE(program.points.empty());
     const auto broken = programViolation(program, text);
     EXPECT_FALSE(broken) << *broken;
@@ -166,12 +167,12 @@ TEST(ReaderRegressions, ArcPointsOfAProgramAreCapped) {
 }
 
 TEST(ReaderRegressions, OverflowingAxisNormsAreNormalisedSafely) {
-  const io::ClProgram apt = io::decodeApt(readText(kRegressions / "apt/axis_norm_overflow.apt"),
-                                          "axis_norm_overflow.apt");
+  const planning::ClProgram apt = io::decodeApt(
+      readText(kRegressions / "apt/axis_norm_overflow.apt"), "axis_norm_overflow.apt");
   ASSERT_EQ(apt.points.size(), 1u);
   ASSERT_TRUE(apt.points[0].axis);
   EXPECT_NEAR((*apt.points[0].axis - ddf::Vec3(0, -1, 0)).norm(), 0.0, 1e-12);
-  const io::ClProgram csv = io::decodeToolPathCsv(
+  const planning::ClProgram csv = io::decodeToolPathCsv(
       readText(kRegressions / "csv/axis_norm_overflow.csv"), "axis_norm_overflow.csv");
   ASSERT_EQ(csv.points.size(), 1u);
   ASSERT_TRUE(csv.points[0].axis);

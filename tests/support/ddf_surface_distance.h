@@ -6,7 +6,10 @@
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/ddf/triangle_mesh.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 #include "brute_force_distance.h"
@@ -35,12 +38,55 @@ inline ddf::TriangleMesh latticeSurface(const ddf::DisplacementField& ddf) {
   return out;
 }
 
+/// The triangles of a mesh in runs of consecutive triangles, each with its bounding box: the
+/// distance to the nearest triangle visits only the runs whose box lies nearer than the nearest
+/// triangle found so far, and equals meshDistance() exactly (a box is never farther than its
+/// triangles, and the minimum is taken over the same triangle distances).
+class TriangleRuns {
+ public:
+  explicit TriangleRuns(const ddf::TriangleMesh& mesh) : mesh_(mesh) {
+    for (std::size_t t = 0; t < mesh.triangles.size(); t += kRun) {
+      Eigen::AlignedBox3d box;
+      for (std::size_t u = t; u < std::min(t + kRun, mesh.triangles.size()); ++u)
+        for (const int v : mesh.triangles[u]) box.extend(mesh.vertices[v]);
+      boxes_.push_back(box);
+    }
+  }
+
+  /// Distance from @p p to the nearest triangle, as meshDistance(mesh, p).
+  double distance(const Vec3& p) const {
+    std::vector<double> boxDistance(boxes_.size());
+    for (std::size_t r = 0; r < boxes_.size(); ++r) boxDistance[r] = boxes_[r].exteriorDistance(p);
+    double best = std::numeric_limits<double>::infinity();
+    const auto nearest = std::min_element(boxDistance.begin(), boxDistance.end());
+    if (nearest != boxDistance.end()) best = runDistance(nearest - boxDistance.begin(), p, best);
+    for (std::size_t r = 0; r < boxes_.size(); ++r)
+      if (boxDistance[r] < best) best = runDistance(r, p, best);
+    return best;
+  }
+
+ private:
+  static constexpr std::size_t kRun = 32;
+
+  double runDistance(std::size_t run, const Vec3& p, double best) const {
+    const auto& tri = mesh_.triangles;
+    for (std::size_t t = run * kRun; t < std::min((run + 1) * kRun, tri.size()); ++t)
+      best = std::min(best, triangleDistance(p, mesh_.vertices[tri[t][0]],
+                                             mesh_.vertices[tri[t][1]], mesh_.vertices[tri[t][2]]));
+    return best;
+  }
+
+  const ddf::TriangleMesh& mesh_;
+  std::vector<Eigen::AlignedBox3d> boxes_;
+};
+
 /// Largest brute-force distance from every @p stride-th of @p points to @p mesh.
 inline double largestDistance(const std::vector<Vec3>& points, const ddf::TriangleMesh& mesh,
                               int stride = 1) {
+  const TriangleRuns runs(mesh);
   double worst = 0.0;
   for (std::size_t p = 0; p < points.size(); p += stride)
-    worst = std::max(worst, meshDistance(mesh, points[p]));
+    worst = std::max(worst, runs.distance(points[p]));
   return worst;
 }
 

@@ -166,15 +166,16 @@ bool ErrorMapPanel::computeScallopTable() {
   bool started = false;
   runUserAction(workbench().reportError, tr("Scallop table"), [&] {
     ErrorMapPanel* self = this;
-    started = workbench().jobs.start(tr("Scallop table"), [self](const ProgressCallback& progress) {
-      planning::ScallopSimulationParams params;
+    auto job = [self, simulation = scallopSimulation_](const ProgressCallback& progress) {
+      planning::ScallopSimulationParams params = simulation;
       params.progress = progress;
       auto rows = planning::scallopTable(defaultScallopCases(), params);
       return std::function<void()>([self, rows = std::move(rows)]() mutable {
         self->scallopRows_ = std::move(rows);
         self->showScallopRows();
       });
-    });
+    };
+    started = workbench().jobs.start(tr("Scallop table"), job);
     if (!started) throw InvalidInput("another job is running; wait for it or cancel it first");
   });
   return started;

@@ -6,6 +6,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QSignalBlocker>
 
 namespace ddfcam::gui {
 
@@ -62,6 +63,8 @@ SimulationOptions::SimulationOptions(QWidget* parent) : QWidget(parent) {
   form->addRow(tr("K_p"), coefficient_);
   form->addRow(tr("Force"), force_);
   form->addRow(tr("Wheel speed"), speed_);
+  feed_->setToolTip(tr("Feed of the selected path: saved with it, written to exported programs"));
+  feed_->setKeyboardTracking(false);  // one path edit per entered value, not per keystroke
   form->addRow(tr("Feed"), feed_);
   for (QComboBox* combo : {mode_, model_})
     connect(combo, &QComboBox::currentIndexChanged, this, &SimulationOptions::changed);
@@ -69,6 +72,7 @@ SimulationOptions::SimulationOptions(QWidget* parent) : QWidget(parent) {
     connect(box, &QCheckBox::toggled, this, &SimulationOptions::changed);
   for (QDoubleSpinBox* spin : {coefficient_, force_, speed_, feed_})
     connect(spin, &QDoubleSpinBox::valueChanged, this, &SimulationOptions::changed);
+  connect(feed_, &QDoubleSpinBox::valueChanged, this, &SimulationOptions::feedEdited);
   connect(model_, &QComboBox::currentIndexChanged, this, &SimulationOptions::updateEnabled);
   updateEnabled();
 }
@@ -112,6 +116,11 @@ void SimulationOptions::setPreston(double coefficientMm2PerN, double forceN, dou
   coefficient_->setValue(coefficientMm2PerN / kCoefficientUnit);
   force_->setValue(forceN);
   speed_->setValue(speedMPerS);
+  feed_->setValue(feedMmPerMin);
+}
+
+void SimulationOptions::showFeed(double feedMmPerMin) {
+  const QSignalBlocker block(feed_);
   feed_->setValue(feedMmPerMin);
 }
 

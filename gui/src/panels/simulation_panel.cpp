@@ -10,6 +10,7 @@
 #include <ddfcam/gui/panels/simulation_playback.h>
 #include <ddfcam/gui/panels/tool_editor.h>
 #include <ddfcam/gui/part_view.h>
+#include <ddfcam/gui/path_commands.h>
 #include <ddfcam/gui/tool_overlay.h>
 #include <ddfcam/gui/vtk_view.h>
 
@@ -119,11 +120,14 @@ SimulationPanel::SimulationPanel(Workbench& workbench, QWidget* parent) : Panel(
   connect(simulate_, &QPushButton::clicked, run, &QAction::trigger);
   connect(restore_, &QPushButton::clicked, this, [this] { restoreState(states_->currentRow()); });
   connect(paths_, &QListWidget::currentRowChanged, this, [this] {
+    showFeedOfSelectedPath();
     playback_->setPathIndex(paths_->currentRow());
     if (!playback_->isActive()) showToolOfSelectedPath();
   });
   connect(playback_, &SimulationPlayback::ended, this, [this] { showToolOfSelectedPath(); });
   connect(options_, &SimulationOptions::changed, this, &SimulationPanel::applyOptions);
+  connect(options_, &SimulationOptions::feedEdited, this,
+          [this](double feed) { setPathFeed(paths_->currentRow(), feed); });
   connect(&workbench.document, &Document::changed, this, [this](Changes what) {
     if (what & (Change::Tools | Change::Paths | Change::States | Change::Part)) refresh();
   });
@@ -210,6 +214,29 @@ void SimulationPanel::refresh() {
   raise_->setEnabled(p.part.has_value());
   stockMesh_->setEnabled(p.part.has_value());
   correct_->setEnabled(paths > 0 && p.part.has_value());
+  showFeedOfSelectedPath();
+}
+
+void SimulationPanel::showFeedOfSelectedPath() {
+  const planning::Project& p = workbench().document.project();
+  const int row = paths_->currentRow();
+  if (row >= 0 && row < static_cast<int>(p.paths.size()))
+    options_->showFeed(p.paths[static_cast<std::size_t>(row)].feedMmPerMin);
+}
+
+bool SimulationPanel::setPathFeed(int index, double feedMmPerMin) {
+  Document& document = workbench().document;
+  const planning::Project& p = document.project();
+  if (index < 0 || index >= static_cast<int>(p.paths.size())) return false;
+  planning::ToolPath path = p.paths[static_cast<std::size_t>(index)];
+  if (path.feedMmPerMin == feedMmPerMin) return false;
+  path.feedMmPerMin = feedMmPerMin;
+  const QString text = tr("Set feed of path '%1' to %2 mm/min")
+                           .arg(QString::fromStdString(path.name))
+                           .arg(feedMmPerMin);
+  return runUserAction(workbench().reportError, text, [&] {
+    document.push(std::make_unique<ReplacePathCommand>(document, index, std::move(path), text));
+  });
 }
 
 void SimulationPanel::showToolOfSelectedPath() {

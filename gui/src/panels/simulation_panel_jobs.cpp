@@ -11,6 +11,7 @@
 #include <ddfcam/gui/path_commands.h>
 #include <ddfcam/io/mesh/mesh_io.h>
 #include <ddfcam/planning/inspection/coverage.h>
+#include <ddfcam/planning/model/simulation_states.h>
 #include <ddfcam/planning/pipeline/simulation_stage.h>
 #include <ddfcam/planning/simulation/grinding_simulation.h>
 #include <ddfcam/planning/simulation/workpiece.h>
@@ -147,6 +148,7 @@ bool SimulationPanel::simulatePath(int index) {
         QElapsedTimer clock;
         clock.start();
         planning::PrestonParams pp = prestonParams;
+        pp.feedMmPerS = path.feedMmPerMin / 60.0;  // the feed exported programs are written with
         pp.progress = progress;
         planning::PrestonStageResult r = planning::prestonStage(std::move(*part), tool, path, pp);
         *part = std::move(r.workpiece);
@@ -158,7 +160,7 @@ bool SimulationPanel::simulatePath(int index) {
       }
       text += '\n' + touched;
       return std::function<void()>([this, part, path, title, text, preston] {
-        const std::string name = (preston ? "Preston after " : "after ") + path.name;
+        const std::string name = planning::afterPathStateName(path.name, preston);
         workbench().document.push(std::make_unique<SetHeightsCommand>(
             workbench().document, title, part->allHeights(),
             planning::SimulationState{name, part->allHeights()}));
@@ -184,15 +186,14 @@ bool SimulationPanel::raiseByAllowance(double allowanceMm) {
       return std::function<void()>([this, part, raised, title, allowanceMm] {
         Document& doc = workbench().document;
         const auto& states = doc.project().states;
-        const bool hasDesign = std::ranges::any_of(
-            states, [](const planning::SimulationState& s) { return s.name == "design"; });
+        const bool hasDesign = planning::designState(states) != nullptr;
         std::vector<std::unique_ptr<DocumentCommand>> parts;
         // The error map compares against "design": keep the heights before the first raise.
         if (!hasDesign)
           parts.push_back(std::make_unique<SetHeightsCommand>(
               doc, tr("Record design"), part->allHeights(),
-              planning::SimulationState{"design", part->allHeights()}));
-        const std::string name = "stock +" + QString::number(allowanceMm).toStdString() + " mm";
+              planning::SimulationState{planning::kDesignStateName, part->allHeights()}));
+        const std::string name = planning::allowanceStateName(allowanceMm);
         parts.push_back(std::make_unique<SetHeightsCommand>(
             doc, title, *raised, planning::SimulationState{name, *raised}));
         doc.push(std::make_unique<CompositeCommand>(doc, title, std::move(parts)));

@@ -9,6 +9,7 @@
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/tool_overlay.h>
 #include <ddfcam/gui/vtk_view.h>
+#include <ddfcam/planning/model/simulation_states.h>
 
 #include <QComboBox>
 #include <QGridLayout>
@@ -290,7 +291,7 @@ bool SimulationPlayback::apply() {
   std::unique_ptr<planning::GrindingSimulation> simulation = std::move(simulation_);
   const planning::ToolPath& path = simulation->path();
   const int done = simulation->nextPose(), total = static_cast<int>(path.poses.size());
-  std::string name = "after " + path.name;
+  std::string name = planning::afterPathStateName(path.name);
   if (done < total)
     name += " (poses 1-" + std::to_string(done) + " of " + std::to_string(total) + ")";
   const QString title = tr("Play simulation of '%1'").arg(QString::fromStdString(path.name));

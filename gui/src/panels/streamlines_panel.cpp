@@ -70,9 +70,6 @@ StreamlinesPanel::StreamlinesPanel(Workbench& workbench, QWidget* parent)
     }
     if (what & Change::Part) {
       lastPick_.reset();
-      rawLines_.clear();
-      linkedIdle_.clear();
-      pathList_->setLinkedIdle({});
       strokes_.clear();  // the panel's own; region strokes went with the regions
       stroke_.reset();
     }

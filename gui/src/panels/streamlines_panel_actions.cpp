@@ -136,12 +136,9 @@ void StreamlinesPanel::addPath(std::vector<planning::Streamline> lines, const QS
     const QString idle =
         placed.linked ? tr(", linked: idle %1 mm").arg(placed.linked->idleLengthMm, 0, 'f', 1)
                       : QString();
-    rawLines_[params.name] = placed.lines;
-    if (placed.linked)
-      linkedIdle_[params.name] = placed.linked->idleLengthMm;
-    else
-      linkedIdle_.erase(params.name);
-    pathList_->setLinkedIdle(linkedIdle_);
+    // The path keeps the lines as traced, so smoothing and fairing later start from them.
+    placed.placed.path.rawLines = placed.lines;
+    if (placed.linked) placed.placed.path.linkedIdleMm = placed.linked->idleLengthMm;
     document.push(std::make_unique<AddPathCommand>(document, std::move(placed.placed.path),
                                                    needTool ? std::optional(tool) : std::nullopt));
     status_->setText(tr("%1: %2 lines, cutting %3 mm%4")
@@ -162,11 +159,12 @@ const std::vector<planning::Streamline>* StreamlinesPanel::selectedRawLines(int*
   const int selected = pathList_->selectedPath();
   const auto& paths = workbench().document.project().paths;
   if (index) *index = selected;
-  if (selected < 0 || selected >= static_cast<int>(paths.size())) return nullptr;
-  const auto found = rawLines_.find(paths[selected].name);
-  if (found == rawLines_.end() || found->second.size() != paths[selected].passStarts.size())
+  if (selected < 0 || selected >= static_cast<int>(paths.size()) ||
+      !workbench().document.project().part)
     return nullptr;
-  return &found->second;
+  const planning::ToolPath& path = paths[selected];
+  if (path.rawLines.empty() || path.rawLines.size() != path.passStarts.size()) return nullptr;
+  return &path.rawLines;
 }
 
 void StreamlinesPanel::updatePreview() {
@@ -215,6 +213,8 @@ void StreamlinesPanel::replaceSelected(std::vector<planning::Streamline> lines,
     params.name = old.name;
     params.feedMmPerMin = old.feedMmPerMin;
     planning::ToolPath path = placeLines(*p.part, lines, p.tools.at(old.tool), old.tool, params);
+    path.rawLines = old.rawLines;  // smoothing again starts from the lines as traced
+    path.linkedIdleMm = old.linkedIdleMm;
     const QString text = QString("%1 '%2'").arg(what, QString::fromStdString(old.name));
     document.push(std::make_unique<ReplacePathCommand>(document, index, std::move(path), text));
   });

@@ -75,7 +75,7 @@ class AptParser {
     const UnitGuess guess = guessUnit(text, sourceName);
     unit_ = guess.unit;
     program_.sourceUnit = guess.unit;
-    program_.pointKind = ClPointKind::ToolReference;
+    program_.pointKind = planning::ClPointKind::ToolReference;
     if (guess.fromFeed) {
       program_.warnings.push_back({0, std::string("no UNITS record; positions taken in ") +
                                           (unit_ == LengthUnit::Inch ? "inch" : "mm") +
@@ -83,7 +83,7 @@ class AptParser {
     }
   }
 
-  ClProgram run() {
+  planning::ClProgram run() {
     AptRecord record;
     std::vector<detail::AptComment> comments;
     while (lexer_.next(record, &comments)) {
@@ -180,7 +180,7 @@ class AptParser {
       fail(r.line,
            r.major + " needs 3 or 6 values (x,y,z[,i,j,k]), got " + std::to_string(v.size()));
     }
-    ClPoint p;
+    planning::ClPoint p;
     p.positionMm = positionMm(r, v, 0);
     // The tool axis is modal: a 3-value GOTO keeps the axis of the last 6-value one (until
     // MULTAX/OFF), so a tilted tool stays tilted.
@@ -220,7 +220,7 @@ class AptParser {
     circle_ = c;
   }
 
-  void arc(const ClPoint& end, bool rapid) {
+  void arc(const planning::ClPoint& end, bool rapid) {
     std::vector<ddf::Vec3> points;
     std::string problem;
     if (!detail::interpolateAptArc(*circle_, last_, end.positionMm, params_.chordToleranceMm,
@@ -229,7 +229,7 @@ class AptParser {
     }
     arcPoints_ += points.size();
     for (const ddf::Vec3& q : points) {
-      ClPoint p = end;
+      planning::ClPoint p = end;
       p.positionMm = q;
       p.sourceLine = circle_->line;
       add(p, rapid);
@@ -237,18 +237,18 @@ class AptParser {
   }
 
   /// The tool the records so far describe (LOADTL, CUTTER, TLDATA, TOOL PATH).
-  ClToolChange currentTool() const {
+  planning::ClToolChange currentTool() const {
     return {program_.points.size(), program_.toolNumber, program_.toolName, program_.cutter,
             toolLine_};
   }
 
-  static bool sameTool(const ClToolChange& a, const ClToolChange& b) {
+  static bool sameTool(const planning::ClToolChange& a, const planning::ClToolChange& b) {
     return a.toolNumber == b.toolNumber && a.toolName == b.toolName && a.cutter == b.cutter;
   }
 
   /// A tool record between motions is a tool change: recorded where the next point starts.
   void noteTool() {
-    ClToolChange now = currentTool();
+    planning::ClToolChange now = currentTool();
     if (!firstTool_) {
       firstTool_ = now;
     } else if (!sameTool(now, lastTool_)) {
@@ -265,7 +265,7 @@ class AptParser {
     program_.cutter = firstTool_->cutter;
   }
 
-  void add(ClPoint p, bool rapid) {
+  void add(planning::ClPoint p, bool rapid) {
     if (program_.points.size() >= kMaxPoints) {
       fail(p.sourceLine, "more than 50000000 points; the program is too large");
     }
@@ -337,7 +337,7 @@ class AptParser {
 
   detail::AptLexer lexer_;
   AptReadParams params_;
-  ClProgram program_;
+  planning::ClProgram program_;
   LengthUnit unit_ = LengthUnit::Millimetre;
   double feedMmPerMin_ = 0.0;
   bool rapid_ = false;
@@ -347,10 +347,10 @@ class AptParser {
   int pointInPath_ = 0;
   bool havePoint_ = false;
   ddf::Vec3 last_ = ddf::Vec3::Zero();
-  std::optional<ClToolChange> firstTool_;  // the tool of the first point
-  ClToolChange lastTool_;                  // the tool of the last point
-  int toolLine_ = 0;                       // line of the last tool record
-  std::optional<ddf::Vec3> axis_;          // tool axis in force (modal), empty: vertical / 3-axis
+  std::optional<planning::ClToolChange> firstTool_;  // the tool of the first point
+  planning::ClToolChange lastTool_;                  // the tool of the last point
+  int toolLine_ = 0;                                 // line of the last tool record
+  std::optional<ddf::Vec3> axis_;  // tool axis in force (modal), empty: vertical / 3-axis
   std::optional<detail::AptCircle> circle_;
   std::size_t arcPoints_ = 0;  // points interpolated for CIRCLE records so far
   std::set<std::string> unknownWords_;
@@ -358,8 +358,8 @@ class AptParser {
 
 }  // namespace
 
-ClProgram decodeApt(std::string_view text, const std::string& sourceName,
-                    const AptReadParams& params) {
+planning::ClProgram decodeApt(std::string_view text, const std::string& sourceName,
+                              const AptReadParams& params) {
   if (!(params.chordToleranceMm > 0.0) || !std::isfinite(params.chordToleranceMm)) {
     throw InvalidInput("APT reader: chord tolerance must be finite and > 0");
   }
@@ -373,14 +373,14 @@ ClProgram decodeApt(std::string_view text, const std::string& sourceName,
   return AptParser(text, sourceName, params).run();
 }
 
-ClProgram readApt(const std::filesystem::path& path, const AptReadParams& params) {
+planning::ClProgram readApt(const std::filesystem::path& path, const AptReadParams& params) {
   std::error_code ec;
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   if (!ec && size > kMaxFileBytes) {
     throw IoError(path.string() + ": larger than 1 GiB; refused as an APT file");
   }
   const std::string bytes = detail::readFileBytes(path);
-  ClProgram program = decodeApt(bytes, path.string(), params);
+  planning::ClProgram program = decodeApt(bytes, path.string(), params);
   if (program.partName.empty()) program.partName = path.stem().string();
   return program;
 }

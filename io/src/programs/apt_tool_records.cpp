@@ -20,7 +20,7 @@ double toolLengthMm(const AptLexer& lexer, const AptRecord& r, double value, dou
 
 }  // namespace
 
-void readLoadTool(const AptLexer& lexer, const AptRecord& r, ClProgram& program) {
+void readLoadTool(const AptLexer& lexer, const AptRecord& r, planning::ClProgram& program) {
   const auto values = splitValues(r.rest);
   if (values.empty()) lexer.fail(r.line, "LOADTL without a tool number");
   const double n = aptNumber(lexer, r, values[0]);
@@ -30,11 +30,12 @@ void readLoadTool(const AptLexer& lexer, const AptRecord& r, ClProgram& program)
   program.toolNumber = static_cast<int>(n);
 }
 
-void readCutter(const AptLexer& lexer, const AptRecord& r, double per, ClProgram& program) {
+void readCutter(const AptLexer& lexer, const AptRecord& r, double per,
+                planning::ClProgram& program) {
   const auto v = aptNumbers(lexer, r, splitValues(r.rest));
   if (v.empty() || v.size() > 7) lexer.fail(r.line, "CUTTER needs 1 to 7 values");
   const auto mm = [&](std::size_t k) { return toolLengthMm(lexer, r, v[k], per); };
-  ClCutter c;
+  planning::ClCutter c;
   c.diameterMm = mm(0);
   if (v.size() >= 2) c.cornerRadiusMm = mm(1);
   c.eMm = v.size() >= 3 ? mm(2) : c.diameterMm / 2.0 - c.cornerRadiusMm;
@@ -46,7 +47,8 @@ void readCutter(const AptLexer& lexer, const AptRecord& r, double per, ClProgram
 }
 
 /// NX: TLDATA/MILL,diameter,corner radius,length,taper angle,tip angle.
-void readToolData(const AptLexer& lexer, const AptRecord& r, double per, ClProgram& program) {
+void readToolData(const AptLexer& lexer, const AptRecord& r, double per,
+                  planning::ClProgram& program) {
   const auto values = splitValues(r.rest);
   if (values.size() < 3 || upperAscii(values[0]) != "MILL") {
     program.comments.push_back(r.text);
@@ -56,7 +58,7 @@ void readToolData(const AptLexer& lexer, const AptRecord& r, double per, ClProgr
   const auto v =
       aptNumbers(lexer, r, std::vector<std::string_view>(values.begin() + 1, values.end()));
   const auto mm = [&](std::size_t k) { return toolLengthMm(lexer, r, v[k], per); };
-  ClCutter c;
+  planning::ClCutter c;
   c.diameterMm = mm(0);
   c.cornerRadiusMm = mm(1);
   c.eMm = c.diameterMm / 2.0 - c.cornerRadiusMm;
@@ -67,7 +69,7 @@ void readToolData(const AptLexer& lexer, const AptRecord& r, double per, ClProgr
   program.cutter = c;
 }
 
-void readSpindle(const AptLexer& lexer, const AptRecord& r, ClProgram& program) {
+void readSpindle(const AptLexer& lexer, const AptRecord& r, planning::ClProgram& program) {
   for (const std::string_view v : splitValues(r.rest)) {
     const std::string w = upperAscii(v);
     if (w == "CLW") {
@@ -84,13 +86,13 @@ void readSpindle(const AptLexer& lexer, const AptRecord& r, ClProgram& program) 
   }
 }
 
-void readCoolant(const AptRecord& r, ClProgram& program) {
+void readCoolant(const AptRecord& r, planning::ClProgram& program) {
   const auto values = splitValues(r.rest);
   if (values.empty()) return;
   if (upperAscii(values[0]) != "OFF") program.coolant = true;
 }
 
-void readMachineSystem(const AptLexer& lexer, const AptRecord& r, ClProgram& program) {
+void readMachineSystem(const AptLexer& lexer, const AptRecord& r, planning::ClProgram& program) {
   const auto v = aptNumbers(lexer, r, splitValues(r.rest));
   if (v.size() != 9) lexer.fail(r.line, "MSYS needs 9 values, got " + std::to_string(v.size()));
   static constexpr double kIdentity[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};

@@ -16,7 +16,6 @@ namespace ddfcam::io {
 namespace {
 
 using planning::MoveKind;
-using planning::ToolKind;
 
 /// Values are written in fixed notation; this bound keeps every number (and so every record
 /// piece) short enough for the column limit.
@@ -87,8 +86,8 @@ class AptLines {
   std::string out_;
 };
 
-void checkParams(const ClProgram& program, const AptWriteParams& params) {
-  if (program.pointKind == ClPointKind::Contact) {
+void checkParams(const planning::ClProgram& program, const AptWriteParams& params) {
+  if (program.pointKind == planning::ClPointKind::Contact) {
     throw InvalidInput("APT output needs tool reference points (APT CL points); program '" +
                        program.partName + "' holds contact points");
   }
@@ -113,7 +112,7 @@ void checkParams(const ClProgram& program, const AptWriteParams& params) {
   }
 }
 
-void checkPoint(const ClPoint& p, std::size_t index, double per) {
+void checkPoint(const planning::ClPoint& p, std::size_t index, double per) {
   const std::string where = "APT output: point " + std::to_string(index);
   if (!p.positionMm.allFinite() || p.positionMm.cwiseAbs().maxCoeff() / per >= kLargest) {
     throw InvalidInput(where + " has a non-finite position or one beyond 1e9 file units");
@@ -136,12 +135,12 @@ std::string partText(const std::string& name, int maxColumns) {
 }
 
 /// CUTTER (when known) and LOADTL of one tool.
-void writeTool(const std::optional<ClCutter>& cutter, int toolNumber, const AptWriteParams& params,
-               AptLines& lines) {
+void writeTool(const std::optional<planning::ClCutter>& cutter, int toolNumber,
+               const AptWriteParams& params, AptLines& lines) {
   const double per = millimetresPer(params.unit);
   const int cd = params.coordinateDecimals;
   if (cutter) {
-    const ClCutter& c = *cutter;
+    const planning::ClCutter& c = *cutter;
     const std::array<double, 7> values{
         c.diameterMm / per, c.cornerRadiusMm / per, c.eMm / per, c.fMm / per, c.alphaDeg,
         c.betaDeg,          c.heightMm / per};
@@ -157,7 +156,8 @@ void writeTool(const std::optional<ClCutter>& cutter, int toolNumber, const AptW
   lines.plain("LOADTL/" + std::to_string(toolNumber));
 }
 
-void writeHeader(const ClProgram& program, const AptWriteParams& params, AptLines& lines) {
+void writeHeader(const planning::ClProgram& program, const AptWriteParams& params,
+                 AptLines& lines) {
   const int cd = params.coordinateDecimals;
   lines.plain(partText(program.partName, params.maxColumns));
   lines.plain(params.unit == LengthUnit::Inch ? "UNITS/INCHES" : "UNITS/MM");
@@ -171,14 +171,15 @@ void writeHeader(const ClProgram& program, const AptWriteParams& params, AptLine
   if (program.multiAxis()) lines.plain("MULTAX/ON");
 }
 
-void writeMotion(const ClProgram& program, const AptWriteParams& params, AptLines& lines) {
+void writeMotion(const planning::ClProgram& program, const AptWriteParams& params,
+                 AptLines& lines) {
   const double per = millimetresPer(params.unit);
   const int cd = params.coordinateDecimals;
   const std::string feedWord = params.unit == LengthUnit::Inch ? "IPM" : "MMPM";
   std::string lastFeed;
   auto change = program.toolChanges.begin();
   for (std::size_t k = 0; k < program.points.size(); ++k) {
-    const ClPoint& p = program.points[k];
+    const planning::ClPoint& p = program.points[k];
     checkPoint(p, k, per);
     for (; change != program.toolChanges.end() && change->firstPoint <= k; ++change) {
       if (change->firstPoint == k) writeTool(change->cutter, change->toolNumber, params, lines);
@@ -204,38 +205,7 @@ void writeMotion(const ClProgram& program, const AptWriteParams& params, AptLine
 
 }  // namespace
 
-ClCutter aptCutter(const planning::Tool& tool) {
-  planning::validateTool(tool);
-  const double radius = tool.radiusMm;
-  double corner = 0.0;
-  double height = tool.widthMm;
-  switch (tool.kind) {
-    case ToolKind::BallEnd:
-      corner = radius;
-      break;
-    case ToolKind::Sphere:
-      corner = radius;
-      height = 2.0 * radius;
-      break;
-    case ToolKind::FlatEnd:
-      corner = 0.0;
-      break;
-    case ToolKind::TorusCutter:
-    case ToolKind::CylinderRoll:
-    case ToolKind::BeltContactWheel:
-      corner = tool.edgeRadiusMm;
-      break;
-  }
-  ClCutter cutter;
-  cutter.diameterMm = 2.0 * radius;
-  cutter.cornerRadiusMm = corner;
-  cutter.eMm = radius - corner;
-  cutter.fMm = corner;
-  cutter.heightMm = height;
-  return cutter;
-}
-
-std::string encodeApt(const ClProgram& program, const AptWriteParams& params) {
+std::string encodeApt(const planning::ClProgram& program, const AptWriteParams& params) {
   checkParams(program, params);
   AptLines lines(params.maxColumns);
   writeHeader(program, params, lines);
@@ -247,7 +217,7 @@ std::string encodeApt(const ClProgram& program, const AptWriteParams& params) {
   return lines.take();
 }
 
-void writeApt(const ClProgram& program, const std::filesystem::path& path,
+void writeApt(const planning::ClProgram& program, const std::filesystem::path& path,
               const AptWriteParams& params) {
   const std::string text = encodeApt(program, params);
   detail::writeFileAtomically(path, text);

@@ -44,7 +44,7 @@ class LsReader {
   LsReader(std::string_view text, const std::string& name)
       : text_(text), name_(name), errors_(name), positions_(errors_) {}
 
-  ClProgram read() {
+  planning::ClProgram read() {
     std::size_t pos = text_.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;  // UTF-8 byte order mark
     int number = 0;
     while (pos < text_.size()) {
@@ -227,7 +227,7 @@ class LsReader {
 
   // ---- result ----
 
-  ClProgram assemble() {
+  planning::ClProgram assemble() {
     if (!sawMain_) throw IoError(name_ + ": no /MN section");
     if (motions_.empty()) throw IoError(name_ + ": no motion instructions in /MN");
     if (!sawEnd_) warn(0, "no /END: the file may be truncated");
@@ -258,13 +258,14 @@ class LsReader {
     return std::move(program_);
   }
 
-  static ClPoint makePoint(const Motion& m, const detail::LsPosition& p, int path, int index) {
+  static planning::ClPoint makePoint(const Motion& m, const detail::LsPosition& p, int path,
+                                     int index) {
     constexpr double kRad = std::numbers::pi / 180.0;
     const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(p.value[5] * kRad, ddf::Vec3::UnitZ()) *
                                       Eigen::AngleAxisd(p.value[4] * kRad, ddf::Vec3::UnitY()) *
                                       Eigen::AngleAxisd(p.value[3] * kRad, ddf::Vec3::UnitX()))
                                          .toRotationMatrix();
-    ClPoint point;
+    planning::ClPoint point;
     point.path = path;
     point.point = index;
     point.positionMm = ddf::Vec3(p.value[0], p.value[1], p.value[2]);
@@ -277,7 +278,7 @@ class LsReader {
 
   std::string_view text_;
   const std::string& name_;
-  ClProgram program_;
+  planning::ClProgram program_;
   Section section_ = Section::None;
   bool sawProg_ = false;
   bool sawMain_ = false;
@@ -293,11 +294,11 @@ class LsReader {
 
 }  // namespace
 
-ClProgram decodeFanucLs(std::string_view text, const std::string& sourceName) {
+planning::ClProgram decodeFanucLs(std::string_view text, const std::string& sourceName) {
   return LsReader(text, sourceName).read();
 }
 
-ClProgram readFanucLs(const std::filesystem::path& file) {
+planning::ClProgram readFanucLs(const std::filesystem::path& file) {
   std::error_code ec;
   const std::uintmax_t size = std::filesystem::file_size(file, ec);
   if (!ec && size > kMaxFileBytes)

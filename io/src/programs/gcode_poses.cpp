@@ -4,7 +4,7 @@
 #include "gcode_poses.h"
 
 #include <ddfcam/error.h>
-#include <ddfcam/io/programs/cutter_tool.h>
+#include <ddfcam/planning/placement/cutter_tool.h>
 
 #include <algorithm>
 #include <charconv>
@@ -24,8 +24,8 @@ constexpr double kUnitTolerance = 1e-4;
 constexpr double kVerticalTolerance = 1e-6;
 
 /// Text naming point @p i of @p program for messages.
-std::string pointName(const ClProgram& program, std::size_t i) {
-  const ClPoint& p = program.points[i];
+std::string pointName(const planning::ClProgram& program, std::size_t i) {
+  const planning::ClPoint& p = program.points[i];
   std::string s = "G-code: point " + std::to_string(i) + " (path " + std::to_string(p.path) +
                   ", point " + std::to_string(p.point);
   if (p.sourceLine > 0) s += ", line " + std::to_string(p.sourceLine);
@@ -60,10 +60,10 @@ ddf::Vec3 unitOf(const ddf::Vec3& v, const std::string& what, const std::string&
 }
 
 /// Tool tip of point @p i given its unit tool axis @p axis (part frame, mm).
-ddf::Vec3 tipOf(const ClProgram& program, std::size_t i, const ddf::Vec3& axis,
+ddf::Vec3 tipOf(const planning::ClProgram& program, std::size_t i, const ddf::Vec3& axis,
                 std::pair<double, double> radii) {
-  const ClPoint& p = program.points[i];
-  if (program.pointKind == ClPointKind::ToolReference) return p.positionMm;
+  const planning::ClPoint& p = program.points[i];
+  if (program.pointKind == planning::ClPointKind::ToolReference) return p.positionMm;
   const std::string where = pointName(program, i);
   if (!p.normal) throw InvalidInput(where + ": a contact point needs a surface normal");
   const ddf::Vec3 n = unitOf(*p.normal, "normal", where);
@@ -96,9 +96,9 @@ std::string threeAxisAdvice(const ddf::Vec3& axis) {
 
 /// Unit tool axis of point @p i (part frame): the file's, else the axis in force @p inForce
 /// (the last one given: a point without an axis keeps it, as APT's GOTO does), else +Z.
-ddf::Vec3 axisOf(const ClProgram& program, std::size_t i, Mode mode,
+ddf::Vec3 axisOf(const planning::ClProgram& program, std::size_t i, Mode mode,
                  std::optional<ddf::Vec3>& inForce) {
-  const ClPoint& p = program.points[i];
+  const planning::ClPoint& p = program.points[i];
   const std::string where = pointName(program, i);
   if (p.axis) inForce = unitOf(*p.axis, "tool axis", where);
   const ddf::Vec3 a = inForce.value_or(ddf::Vec3::UnitZ());
@@ -110,15 +110,16 @@ ddf::Vec3 axisOf(const ClProgram& program, std::size_t i, Mode mode,
 
 /// Radii of the tool cutting point @p i: @p tool's, or after a tool change that tool's CUTTER.
 /// Only contact programs need them; tool reference programs pass through.
-std::pair<double, double> radiiAt(const ClProgram& program, const ClToolChange* change,
+std::pair<double, double> radiiAt(const planning::ClProgram& program,
+                                  const planning::ClToolChange* change,
                                   const std::pair<double, double>& first) {
-  if (!change || program.pointKind == ClPointKind::ToolReference) return first;
+  if (!change || program.pointKind == planning::ClPointKind::ToolReference) return first;
   if (!change->cutter) {
     throw InvalidInput("G-code: tool T" + std::to_string(change->toolNumber) +
                        " has no CUTTER record, so the tool tips of the contact points it cuts "
                        "cannot be computed; give every tool a CUTTER");
   }
-  return cutterRadii(toolFromCutter(*change->cutter, change->toolName));
+  return cutterRadii(planning::toolFromCutter(*change->cutter, change->toolName));
 }
 
 }  // namespace
@@ -182,15 +183,15 @@ void validateGCodeParams(const GCodeWriteParams& p) {
 }
 
 /// The tool change starting at point @p i, if any (changes in order of firstPoint).
-const ClToolChange* changeAt(const ClProgram& program, std::size_t i) {
-  for (const ClToolChange& c : program.toolChanges)
+const planning::ClToolChange* changeAt(const planning::ClProgram& program, std::size_t i) {
+  for (const planning::ClToolChange& c : program.toolChanges)
     if (c.firstPoint == i) return &c;
   return nullptr;
 }
 
 /// Positions of every point as written, in program order (mm, degrees): machine X Y Z from the
 /// kinematics, or with tcpPositions the tip in the part frame.
-std::vector<planning::MachinePose> machinePoses(const ClProgram& program,
+std::vector<planning::MachinePose> machinePoses(const planning::ClProgram& program,
                                                 const planning::Tool& tool,
                                                 const GCodeWriteParams& params) {
   const std::pair<double, double> firstRadii = cutterRadii(tool);
@@ -200,11 +201,11 @@ std::vector<planning::MachinePose> machinePoses(const ClProgram& program,
   planning::MachinePose previous = params.startPose;
   std::optional<ddf::Vec3> inForce;
   for (std::size_t i = 0; i < program.points.size(); ++i) {
-    const ClPoint& p = program.points[i];
+    const planning::ClPoint& p = program.points[i];
     if (!p.positionMm.allFinite() || !std::isfinite(p.feedMmPerMin) || p.feedMmPerMin < 0.0) {
       throw InvalidInput(pointName(program, i) + ": position or feed is not finite (or < 0)");
     }
-    if (const ClToolChange* change = changeAt(program, i))
+    if (const planning::ClToolChange* change = changeAt(program, i))
       radii = radiiAt(program, change, firstRadii);
     const ddf::Vec3 axis = axisOf(program, i, params.mode, inForce);
     const ddf::Vec3 tip = tipOf(program, i, axis, radii);

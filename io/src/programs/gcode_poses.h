@@ -23,11 +23,11 @@ std::string commentText(std::string_view text);
 /// @throws InvalidInput for options encodeGCode() cannot write with, naming the option.
 void validateGCodeParams(const GCodeWriteParams& params);
 /// The tool change starting at point @p i of @p program, if any.
-const ClToolChange* changeAt(const ClProgram& program, std::size_t i);
+const planning::ClToolChange* changeAt(const planning::ClProgram& program, std::size_t i);
 /// Positions of every point as written, in program order (mm, degrees): machine X Y Z from the
 /// kinematics, or with tcpPositions the tip in the part frame; points without an axis keep the
 /// axis in force. @throws InvalidInput as encodeGCode(), naming the point.
-std::vector<planning::MachinePose> machinePoses(const ClProgram& program,
+std::vector<planning::MachinePose> machinePoses(const planning::ClProgram& program,
                                                 const planning::Tool& tool,
                                                 const GCodeWriteParams& params);
 

@@ -4,8 +4,8 @@
 #include "gcode_poses.h"
 
 #include <ddfcam/error.h>
-#include <ddfcam/io/programs/cutter_tool.h>
 #include <ddfcam/io/programs/gcode_writer.h>
+#include <ddfcam/planning/placement/cutter_tool.h>
 
 #include <algorithm>
 #include <charconv>
@@ -82,7 +82,7 @@ void toolBlocks(Blocks& out, int number, const GCodeWriteParams& p) {
 
 /// Spindle on (S M3|M4) and coolant (M8): at the start and again after every tool change,
 /// since M6 stops the spindle.
-void spindleBlocks(Blocks& out, const ClProgram& program, const GCodeWriteParams& p) {
+void spindleBlocks(Blocks& out, const planning::ClProgram& program, const GCodeWriteParams& p) {
   const double rpm = p.spindleRpm > 0.0 ? p.spindleRpm
                      : program.spindleRpm > 0.0 && std::isfinite(program.spindleRpm)
                          ? program.spindleRpm
@@ -92,7 +92,7 @@ void spindleBlocks(Blocks& out, const ClProgram& program, const GCodeWriteParams
   if (program.coolant) out.block("M8");
 }
 
-void writeHeader(Blocks& out, const ClProgram& program, const planning::Tool& tool,
+void writeHeader(Blocks& out, const planning::ClProgram& program, const planning::Tool& tool,
                  const GCodeWriteParams& p) {
   out.raw("%");
   const bool five = p.mode == Mode::FiveAxis;
@@ -109,7 +109,7 @@ void writeHeader(Blocks& out, const ClProgram& program, const planning::Tool& to
   }
   if (!p.machineName.empty()) out.comment("machine: " + p.machineName);
   if (p.tcpPositions) out.comment("X Y Z: tool tip in the part frame (tool centre point control)");
-  for (const ClToolChange& c : program.toolChanges) {
+  for (const planning::ClToolChange& c : program.toolChanges) {
     out.comment("tool change at point " + std::to_string(c.firstPoint) + ": T" +
                 std::to_string(toolNumberOf(c.toolNumber)) + " " + c.toolName);
   }
@@ -144,8 +144,9 @@ std::string feedValue(double feedMmPerMin, const planning::MachinePose& from,
 
 /// Retracts to the safe plane, changes to the tool of @p change and comes down to @p above,
 /// the safe plane over its first point, as at the start.
-void changeTool(Blocks& out, const ClProgram& program, const ClToolChange& change,
-                const planning::MachinePose& above, const GCodeWriteParams& p) {
+void changeTool(Blocks& out, const planning::ClProgram& program,
+                const planning::ClToolChange& change, const planning::MachinePose& above,
+                const GCodeWriteParams& p) {
   if (!p.tcpOffBlock.empty()) out.block(p.tcpOffBlock);
   out.block("G0 Z" + fixed(above.xyzMm.z() / millimetresPer(p.unit), p.decimals));
   out.comment("tool: T" + std::to_string(toolNumberOf(change.toolNumber)) + " " + change.toolName);
@@ -154,7 +155,7 @@ void changeTool(Blocks& out, const ClProgram& program, const ClToolChange& chang
   out.block("G0 " + axisWords(above, p));
 }
 
-void writeMotion(Blocks& out, const ClProgram& program,
+void writeMotion(Blocks& out, const planning::ClProgram& program,
                  const std::vector<planning::MachinePose>& poses, const GCodeWriteParams& p) {
   if (poses.empty()) return;
   double topZ = -std::numeric_limits<double>::infinity();
@@ -167,8 +168,8 @@ void writeMotion(Blocks& out, const ClProgram& program,
   out.block("G0 " + axisWords(above, p));
   std::string lastFeed;
   for (std::size_t i = 0; i < poses.size(); ++i) {
-    const ClPoint& point = program.points[i];
-    if (const ClToolChange* change = changeAt(program, i); change && i > 0) {
+    const planning::ClPoint& point = program.points[i];
+    if (const planning::ClToolChange* change = changeAt(program, i); change && i > 0) {
       above = poses[i];
       above.xyzMm.z() = safeZ;
       changeTool(out, program, *change, above, p);
@@ -194,7 +195,7 @@ void writeMotion(Blocks& out, const ClProgram& program,
 
 }  // namespace
 
-std::string encodeGCode(const ClProgram& program, const planning::Tool& tool,
+std::string encodeGCode(const planning::ClProgram& program, const planning::Tool& tool,
                         const GCodeWriteParams& params) {
   detail::validateGCodeParams(params);
   const std::vector<planning::MachinePose> poses = detail::machinePoses(program, tool, params);
@@ -207,7 +208,7 @@ std::string encodeGCode(const ClProgram& program, const planning::Tool& tool,
   return out.take();
 }
 
-void writeGCode(const std::filesystem::path& path, const ClProgram& program,
+void writeGCode(const std::filesystem::path& path, const planning::ClProgram& program,
                 const planning::Tool& tool, const GCodeWriteParams& params) {
   detail::writeFileAtomically(path, encodeGCode(program, tool, params));
 }

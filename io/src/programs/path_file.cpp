@@ -5,6 +5,7 @@
 #include <ddfcam/error.h>
 #include <ddfcam/io/programs/fanuc_ls_reader.h>
 #include <ddfcam/io/programs/ros_toolpath_reader.h>
+#include <ddfcam/planning/placement/cutter_tool.h>
 
 #include <algorithm>
 #include <cctype>
@@ -286,7 +287,7 @@ std::optional<PathFormat> detectPathFormat(const std::filesystem::path& file,
   return sniffUnknown(head, lines);
 }
 
-ClProgram readPathFile(const std::filesystem::path& file, const PathReadParams& params) {
+PathFile readPathFile(const std::filesystem::path& file, const PathReadParams& params) {
   const std::optional<PathFormat> format = detectPathFormat(file, readHead(file));
   if (!format)
     throw IoError(file.string() +
@@ -294,13 +295,13 @@ ClProgram readPathFile(const std::filesystem::path& file, const PathReadParams& 
                   ".ls)");
   switch (*format) {
     case PathFormat::Csv:
-      return readToolPathCsv(file, params.csv);
+      return {readToolPathCsv(file, params.csv), *format};
     case PathFormat::Apt:
-      return readApt(file, params.apt);
+      return {readApt(file, params.apt), *format};
     case PathFormat::RosYaml:
-      return readRosToolpathYaml(file);
+      return {readRosToolpathYaml(file), *format};
     case PathFormat::FanucLs:
-      return readFanucLs(file);
+      return {readFanucLs(file), *format};
     case PathFormat::GCode:
       break;
   }
@@ -309,15 +310,15 @@ ClProgram readPathFile(const std::filesystem::path& file, const PathReadParams& 
                 "toolpath YAML or FANUC .ls");
 }
 
-void writePathFile(const ClProgram& program, const planning::Tool& tool,
+void writePathFile(const planning::ClProgram& program, const planning::Tool& tool,
                    const std::filesystem::path& file, const PathWriteParams& params) {
   switch (params.format) {
     case PathFormat::Csv:
       return writeToolPathCsv(program, file, params.csv);
     case PathFormat::Apt: {
       if (program.cutter) return writeApt(program, file, params.apt);
-      ClProgram withCutter = program;
-      withCutter.cutter = aptCutter(tool);
+      planning::ClProgram withCutter = program;
+      withCutter.cutter = planning::aptCutter(tool);
       return writeApt(withCutter, file, params.apt);
     }
     case PathFormat::GCode:

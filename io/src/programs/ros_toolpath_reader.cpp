@@ -26,10 +26,10 @@ class PoseReader {
  public:
   explicit PoseReader(const std::string& name) : name_(name) {
     program_.sourceUnit = LengthUnit::Metre;
-    program_.pointKind = ClPointKind::ToolReference;
+    program_.pointKind = planning::ClPointKind::ToolReference;
   }
 
-  ClProgram read(const YamlNode& root) {
+  planning::ClProgram read(const YamlNode& root) {
     if (root.kind == YamlKind::Mapping && root.find("paths")) {
       readEntry(root);
     } else if (root.kind == YamlKind::Sequence) {
@@ -123,7 +123,7 @@ class PoseReader {
   void readPose(const YamlNode& pose, int index) {
     const YamlNode& position = require(pose, "position", "a pose");
     const YamlNode& orientation = require(pose, "orientation", "a pose");
-    ClPoint point;
+    planning::ClPoint point;
     point.path = pathIndex_;
     point.point = index;
     point.positionMm = ddf::Vec3(millimetres(position, "x"), millimetres(position, "y"),
@@ -154,24 +154,24 @@ class PoseReader {
   }
 
   const std::string& name_;
-  ClProgram program_;
+  planning::ClProgram program_;
   int pathIndex_ = 0;
   bool frameKept_ = false;
 };
 
 }  // namespace
 
-ClProgram decodeRosToolpathYaml(std::string_view text, const std::string& sourceName) {
+planning::ClProgram decodeRosToolpathYaml(std::string_view text, const std::string& sourceName) {
   const YamlNode root = detail::parseYamlSubset(text, sourceName);
   return PoseReader(sourceName).read(root);
 }
 
-ClProgram readRosToolpathYaml(const std::filesystem::path& file) {
+planning::ClProgram readRosToolpathYaml(const std::filesystem::path& file) {
   std::error_code ec;
   const std::uintmax_t size = std::filesystem::file_size(file, ec);
   if (!ec && size > kMaxFileBytes)
     throw IoError(file.string() + ": file larger than 1 GiB, refused as a tool path");
-  ClProgram program = decodeRosToolpathYaml(detail::readFileBytes(file), file.string());
+  planning::ClProgram program = decodeRosToolpathYaml(detail::readFileBytes(file), file.string());
   if (program.partName.empty()) program.partName = file.stem().string();
   return program;
 }

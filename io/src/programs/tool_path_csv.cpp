@@ -47,12 +47,13 @@ void appendVec(std::string& out, const std::optional<ddf::Vec3>& v, double scale
   }
 }
 
-std::string pointName(const ClPoint& p, std::size_t index) {
+std::string pointName(const planning::ClPoint& p, std::size_t index) {
   return "point " + std::to_string(index) + " (path " + std::to_string(p.path) + " point " +
          std::to_string(p.point) + ")";
 }
 
-void appendRow(std::string& out, const ClPoint& p, std::size_t index, double perMm, int decimals) {
+void appendRow(std::string& out, const planning::ClPoint& p, std::size_t index, double perMm,
+               int decimals) {
   out += std::to_string(p.path);
   out += ',';
   out += std::to_string(p.point);
@@ -82,14 +83,14 @@ std::string sanitised(const std::string& name) {
 
 }  // namespace
 
-std::string toolPathCsvHeader(ClPointKind kind, LengthUnit unit) {
-  const std::string p = kind == ClPointKind::Contact ? "contact" : "tool";
+std::string toolPathCsvHeader(planning::ClPointKind kind, LengthUnit unit) {
+  const std::string p = kind == planning::ClPointKind::Contact ? "contact" : "tool";
   const std::string u(unitSymbol(unit));
   return "path,point," + p + "_x_" + u + "," + p + "_y_" + u + "," + p + "_z_" + u +
          ",axis_i,axis_j,axis_k,normal_x,normal_y,normal_z,feed_" + u + "_per_min,move";
 }
 
-std::string encodeToolPathCsv(const ClProgram& program, const CsvWriteParams& params) {
+std::string encodeToolPathCsv(const planning::ClProgram& program, const CsvWriteParams& params) {
   if (params.decimals < 0 || params.decimals > kMaxDecimals)
     throw InvalidInput("tool path CSV: " + std::to_string(params.decimals) +
                        " decimals, expected 0.." + std::to_string(kMaxDecimals));
@@ -101,7 +102,7 @@ std::string encodeToolPathCsv(const ClProgram& program, const CsvWriteParams& pa
   return out;
 }
 
-void writeToolPathCsv(const ClProgram& program, const std::filesystem::path& file,
+void writeToolPathCsv(const planning::ClProgram& program, const std::filesystem::path& file,
                       const CsvWriteParams& params) {
   detail::writeFileAtomically(file, encodeToolPathCsv(program, params));
 }
@@ -112,9 +113,9 @@ std::filesystem::path toolPathCsvFileFor(const std::filesystem::path& base,
   return base.parent_path() / (base.stem().string() + "_" + sanitised(name) + extension);
 }
 
-std::vector<std::filesystem::path> writeToolPathCsvFiles(const std::vector<NamedProgram>& programs,
-                                                         const std::filesystem::path& base,
-                                                         const CsvWriteParams& params) {
+std::vector<std::filesystem::path> writeToolPathCsvFiles(
+    const std::vector<planning::NamedProgram>& programs, const std::filesystem::path& base,
+    const CsvWriteParams& params) {
   if (programs.empty())
     throw InvalidInput("tool path CSV: no program to write to " + base.string());
   std::vector<std::filesystem::path> files;
@@ -122,7 +123,7 @@ std::vector<std::filesystem::path> writeToolPathCsvFiles(const std::vector<Named
     files.push_back(base);
   } else {
     std::set<std::filesystem::path> used;
-    for (const NamedProgram& named : programs) {
+    for (const planning::NamedProgram& named : programs) {
       std::filesystem::path file = toolPathCsvFileFor(base, named.name);
       for (int n = 2; used.count(file) > 0; ++n)
         file = toolPathCsvFileFor(base, named.name + "_" + std::to_string(n));
@@ -133,7 +134,7 @@ std::vector<std::filesystem::path> writeToolPathCsvFiles(const std::vector<Named
   // Encode everything first so a bad value leaves no partial set of files behind.
   std::vector<std::string> texts;
   texts.reserve(programs.size());
-  for (const NamedProgram& named : programs)
+  for (const planning::NamedProgram& named : programs)
     texts.push_back(encodeToolPathCsv(named.program, params));
   for (std::size_t i = 0; i < programs.size(); ++i) detail::writeFileAtomically(files[i], texts[i]);
   return files;

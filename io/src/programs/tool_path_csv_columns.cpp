@@ -106,7 +106,7 @@ std::optional<LengthUnit> unitFromText(std::string_view text) {
 struct ParsedName {
   CsvColumn column = CsvColumn::Ignore;
   std::optional<LengthUnit> unit;
-  std::optional<ClPointKind> kind;
+  std::optional<planning::ClPointKind> kind;
   std::string error;
 };
 
@@ -144,9 +144,10 @@ ParsedName parseName(std::string_view raw) {
   std::replace(base.begin(), base.end(), ' ', '_');
   std::replace(base.begin(), base.end(), '-', '_');
   base = splitUnit(base, out);
-  std::optional<ClPointKind> kind;
-  for (const auto& [prefix, k] : {std::pair{std::string_view("contact_"), ClPointKind::Contact},
-                                  std::pair{std::string_view("tool_"), ClPointKind::ToolReference}})
+  std::optional<planning::ClPointKind> kind;
+  for (const auto& [prefix, k] :
+       {std::pair{std::string_view("contact_"), planning::ClPointKind::Contact},
+        std::pair{std::string_view("tool_"), planning::ClPointKind::ToolReference}})
     if (base.size() > prefix.size() && std::string_view(base).substr(0, prefix.size()) == prefix) {
       const std::string rest = base.substr(prefix.size());
       if (rest == "x" || rest == "y" || rest == "z") {

@@ -3,7 +3,7 @@
 // stands for, and the units and point kind the header states.
 #pragma once
 
-#include <ddfcam/io/programs/cl_program.h>
+#include <ddfcam/planning/placement/cl_program.h>
 
 #include <optional>
 #include <string>
@@ -17,11 +17,11 @@ enum class CsvColumn { Ignore, Path, Point, X, Y, Z, I, J, K, Nx, Ny, Nz, Feed, 
 
 /// @brief Column layout of a CSV with the units and point kind it states.
 struct CsvLayout {
-  std::vector<CsvColumn> columns;           ///< one entry per field
-  std::optional<LengthUnit> unit;           ///< unit of the position columns, if stated
-  std::optional<LengthUnit> feedUnit;       ///< unit of the feed column, if stated
-  std::optional<ClPointKind> kind;          ///< point kind, if stated (ddfcam's own header)
-  std::vector<std::string> ignoredColumns;  ///< header names not understood (kept as warnings)
+  std::vector<CsvColumn> columns;             ///< one entry per field
+  std::optional<LengthUnit> unit;             ///< unit of the position columns, if stated
+  std::optional<LengthUnit> feedUnit;         ///< unit of the feed column, if stated
+  std::optional<planning::ClPointKind> kind;  ///< point kind, if stated (ddfcam's own header)
+  std::vector<std::string> ignoredColumns;    ///< header names not understood (kept as warnings)
 };
 
 /// @brief A layout, or why a header does not give one.

@@ -86,7 +86,7 @@ std::optional<double> number(std::string_view field) {
 class RowReader {
  public:
   RowReader(const std::string& source, detail::CsvLayout layout, Delimiter delimiter,
-            const CsvReadParams& params, ClProgram& program)
+            const CsvReadParams& params, planning::ClProgram& program)
       : source_(source), layout_(std::move(layout)), delimiter_(delimiter), program_(program) {
     const LengthUnit unit = layout_.unit.value_or(params.unitIfUnstated);
     positionScale_ = millimetresPer(unit);
@@ -110,7 +110,7 @@ class RowReader {
     if (program_.points.size() >= maxRows_)
       throw IoError(source_ + ": line " + std::to_string(line_) + ": more than " +
                     std::to_string(maxRows_) + " rows; files this large are refused");
-    ClPoint point;
+    planning::ClPoint point;
     point.sourceLine = lineNumber;
     values_.fill(0.0);
     present_.fill(false);
@@ -176,7 +176,7 @@ class RowReader {
     fail(fieldName(c) + " is not a move word (cut, link or rapid)");
   }
 
-  void readField(std::size_t c, ClPoint& point) {
+  void readField(std::size_t c, planning::ClPoint& point) {
     const CsvColumn column = layout_.columns[c];
     const bool empty = unquoted(fields_[c]).empty();
     switch (column) {
@@ -229,7 +229,7 @@ class RowReader {
   const std::string& source_;
   detail::CsvLayout layout_;
   Delimiter delimiter_;
-  ClProgram& program_;
+  planning::ClProgram& program_;
   double positionScale_ = 1.0;
   double feedScale_ = 1.0;
   std::size_t maxRows_ = kMaxCsvRows;
@@ -276,7 +276,7 @@ void checkText(std::string_view line, const std::string& source, int lineNumber)
 std::pair<std::unique_ptr<RowReader>, bool> startReading(std::string_view line, int lineNumber,
                                                          const std::string& source,
                                                          const CsvReadParams& params,
-                                                         ClProgram& program) {
+                                                         planning::ClProgram& program) {
   const Delimiter delimiter = detectDelimiter(line);
   std::vector<std::string_view> fields;
   split(line, delimiter, fields);
@@ -302,13 +302,13 @@ std::pair<std::unique_ptr<RowReader>, bool> startReading(std::string_view line, 
 
 }  // namespace
 
-ClProgram decodeToolPathCsv(std::string_view text, const std::string& sourceName,
-                            const CsvReadParams& params) {
+planning::ClProgram decodeToolPathCsv(std::string_view text, const std::string& sourceName,
+                                      const CsvReadParams& params) {
   if (text.size() > kMaxFileBytes)
     throw IoError(sourceName + ": " + std::to_string(text.size()) +
                   " bytes; tool-path CSVs larger than 1 GiB are refused");
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte order mark
-  ClProgram program;
+  planning::ClProgram program;
   program.partName = std::filesystem::path(sourceName).stem().string();
   std::unique_ptr<RowReader> reader;
   for (int lineNumber = 1; !text.empty(); ++lineNumber) {
@@ -334,7 +334,8 @@ ClProgram decodeToolPathCsv(std::string_view text, const std::string& sourceName
   return program;
 }
 
-ClProgram readToolPathCsv(const std::filesystem::path& file, const CsvReadParams& params) {
+planning::ClProgram readToolPathCsv(const std::filesystem::path& file,
+                                    const CsvReadParams& params) {
   std::error_code error;
   const std::uintmax_t size = std::filesystem::file_size(file, error);
   if (!error && size > kMaxFileBytes)

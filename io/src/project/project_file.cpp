@@ -10,6 +10,7 @@
 #include "../common/byte_codec.h"
 #include "../common/file_access.h"
 #include "mould_study_chunk.h"
+#include "path_lines_chunk.h"
 #include "project_chunks.h"
 #include "project_layout.h"
 #include "project_source_chunk.h"
@@ -90,6 +91,8 @@ class ProjectDecoder {
       project_.tools.push_back(detail::readTool(in, version_));
     } else if (tag == detail::kTagPath) {
       project_.paths.push_back(detail::readPath(in));
+    } else if (tag == detail::kTagPathLines) {
+      detail::readPathLines(in, project_.paths);
     } else if (tag == detail::kTagState) {
       project_.states.push_back(detail::readState(in));
     } else if (tag == detail::kTagSurface) {
@@ -137,6 +140,10 @@ std::string encodeProject(const planning::Project& project) {
     detail::putTool(encoder.beginChunk(detail::kTagTool), tool);
   for (const planning::ToolPath& path : project.paths)
     detail::putPath(encoder.beginChunk(detail::kTagPath), path);
+  for (std::size_t i = 0; i < project.paths.size(); ++i)
+    if (detail::hasPathLines(project.paths[i]))
+      detail::putPathLines(encoder.beginChunk(detail::kTagPathLines), static_cast<int>(i),
+                           project.paths[i]);
   for (const planning::ScalarField& field : project.fields)
     detail::putField(encoder.beginChunk(detail::kTagField), field);
   for (const planning::Region& region : project.regions)

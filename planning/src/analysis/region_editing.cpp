@@ -3,10 +3,13 @@
 #include <ddfcam/error.h>
 #include <ddfcam/planning/analysis/region_editing.h>
 
+#include "hsv_color.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
+#include <utility>
 
 namespace ddfcam::planning {
 namespace {
@@ -23,23 +26,12 @@ std::vector<int> sortedUnique(std::vector<int> faces) {
   return faces;
 }
 
-std::array<float, 3> hsvColor(double hue01, double s, double v) {
-  const double hue = std::fmod(hue01, 1.0) * 6.0;
-  const double c = s * v;
-  const double x = c * (1.0 - std::abs(std::fmod(hue, 2.0) - 1.0));
-  const double r[6] = {c, x, 0, 0, x, c}, g[6] = {x, c, c, x, 0, 0}, b[6] = {0, 0, x, c, c, x};
-  const int sector = std::min(5, static_cast<int>(hue));
-  const double m = v - c;
-  return {static_cast<float>(r[sector] + m), static_cast<float>(g[sector] + m),
-          static_cast<float>(b[sector] + m)};
-}
-
 // Candidate i of distinctRegionColor(): a golden-ratio hue walk, alternating between vivid,
 // pale and dark variants so that crowded hue circles still leave clearly different colours.
 std::array<float, 3> candidateColor(int i) {
   static constexpr double kSaturation[3] = {0.65, 0.35, 0.75};
   static constexpr double kValue[3] = {0.92, 0.97, 0.6};
-  return hsvColor(0.13 + 0.6180339887498949 * i, kSaturation[i % 3], kValue[i % 3]);
+  return detail::hsvColor(0.13 + 0.6180339887498949 * i, kSaturation[i % 3], kValue[i % 3]);
 }
 
 // Components of @p faces over shared support edges, each ascending, ordered by lowest face.
@@ -279,57 +271,30 @@ SurfacePointGrid::SurfacePointGrid(const ddf::DisplacementField& ddf, double cel
     : faceCount_(ddf.faceCount()) {
   if (faceCount_ == 0) throw InvalidInput("surface point grid: the DDF has no faces");
   const int n = ddf.raster().steps();
-  std::vector<ddf::Vec3> points;
-  std::vector<int> faces;
-  points.reserve(ddf.pointsPerFace() * faceCount_);
+  points_.reserve(ddf.pointsPerFace() * faceCount_);
+  pointFace_.reserve(points_.capacity());
   double edgeSum = 0.0;
   for (int f = 0; f < faceCount_; ++f) {
     for (int k = 0; k <= n; ++k)
       for (int i = 0; i <= n - k; ++i) {
-        points.push_back(ddf.surfacePoint(f, i, k));
-        faces.push_back(f);
+        points_.push_back(ddf.surfacePoint(f, i, k));
+        pointFace_.push_back(f);
       }
     const auto& v = ddf.faceVertices(f);
     for (int e = 0; e < 3; ++e)
       edgeSum += (ddf.position(v[e]) - ddf.position(v[(e + 1) % 3])).norm();
   }
-  cellSize_ = cellSizeMm > 0.0 ? cellSizeMm : edgeSum / (3.0 * faceCount_);
-  if (!(cellSize_ > 0.0) || !std::isfinite(cellSize_)) cellSize_ = 1.0;
-  ddf::Vec3 lo = points.front(), hi = points.front();
-  for (const ddf::Vec3& p : points) {
+  double cellSize = cellSizeMm > 0.0 ? cellSizeMm : edgeSum / (3.0 * faceCount_);
+  if (!(cellSize > 0.0) || !std::isfinite(cellSize)) cellSize = 1.0;
+  ddf::Vec3 lo = points_.front(), hi = points_.front();
+  for (const ddf::Vec3& p : points_) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  origin_ = lo;
-  // Cell coordinates are packed into 21 bits each; coarsen the grid if the part needs more.
-  while (((hi - lo) / cellSize_).maxCoeff() >= double(1 << 20)) cellSize_ *= 2.0;
-  for (int a = 0; a < 3; ++a) dims_[a] = static_cast<int>((hi[a] - lo[a]) / cellSize_) + 1;
-  std::vector<std::pair<std::int64_t, int>> order(points.size());
-  for (std::size_t p = 0; p < points.size(); ++p) {
-    const auto c = cellOf(points[p]);
-    order[p] = {key(c[0], c[1], c[2]), static_cast<int>(p)};
-  }
-  std::sort(order.begin(), order.end());
-  points_.reserve(points.size());
-  pointFace_.reserve(points.size());
-  for (std::size_t p = 0; p < order.size(); ++p) {
-    points_.push_back(points[order[p].second]);
-    pointFace_.push_back(faces[order[p].second]);
-    auto [it, fresh] = cells_.try_emplace(order[p].first, static_cast<int>(p), static_cast<int>(p));
-    it->second.second = static_cast<int>(p) + 1;
-  }
-}
-
-std::int64_t SurfacePointGrid::key(int x, int y, int z) const {
-  return (static_cast<std::int64_t>(x) << 42) | (static_cast<std::int64_t>(y) << 21) | z;
-}
-
-std::array<int, 3> SurfacePointGrid::cellOf(const ddf::Vec3& p) const {
-  std::array<int, 3> c{};
-  for (int a = 0; a < 3; ++a)
-    c[a] =
-        std::clamp(static_cast<int>(std::floor((p[a] - origin_[a]) / cellSize_)), 0, dims_[a] - 1);
-  return c;
+  // Cells 2^21 apart share a grid key; coarsen the grid if the part spans more.
+  while (((hi - lo) / cellSize).maxCoeff() >= double(1 << 20)) cellSize *= 2.0;
+  grid_ = UniformGrid(cellSize);
+  for (std::size_t p = 0; p < points_.size(); ++p) grid_.add(static_cast<int>(p), points_[p]);
 }
 
 std::vector<int> SurfacePointGrid::facesWithinDistance(const ddf::Vec3& point,
@@ -338,31 +303,9 @@ std::vector<int> SurfacePointGrid::facesWithinDistance(const ddf::Vec3& point,
     throw InvalidInput("brush radius " + std::to_string(radiusMm) + " mm: must be finite and >= 0");
   std::vector<char> hit(faceCount_, 0);
   const double r2 = radiusMm * radiusMm;
-  const auto visit = [&](const std::pair<int, int>& range) {
-    for (int p = range.first; p < range.second; ++p)
-      if ((points_[p] - point).squaredNorm() <= r2) hit[pointFace_[p]] = 1;
-  };
-  const ddf::Vec3 reach = ddf::Vec3::Constant(radiusMm);
-  const ddf::Vec3 lo = (point - reach - origin_) / cellSize_,
-                  hi = (point + reach - origin_) / cellSize_;
-  bool outside = false;
-  std::array<int, 3> a{}, b{};
-  double boxCells = 1.0;
-  for (int k = 0; k < 3; ++k) {
-    if (hi[k] < 0.0 || lo[k] >= dims_[k]) outside = true;
-    a[k] = std::clamp(static_cast<int>(std::floor(lo[k])), 0, dims_[k] - 1);
-    b[k] = std::clamp(static_cast<int>(std::floor(hi[k])), 0, dims_[k] - 1);
-    boxCells *= b[k] - a[k] + 1;
-  }
-  if (outside) return {};
-  if (boxCells > static_cast<double>(cells_.size())) {
-    for (const auto& [cellKey, range] : cells_) visit(range);  // a huge brush: every cell
-  } else {
-    for (int x = a[0]; x <= b[0]; ++x)
-      for (int y = a[1]; y <= b[1]; ++y)
-        for (int z = a[2]; z <= b[2]; ++z)
-          if (const auto it = cells_.find(key(x, y, z)); it != cells_.end()) visit(it->second);
-  }
+  grid_.forEachNear(point, radiusMm, [&](int p) {
+    if ((points_[p] - point).squaredNorm() <= r2) hit[pointFace_[p]] = 1;
+  });
   std::vector<int> out;
   for (int f = 0; f < faceCount_; ++f)
     if (hit[f]) out.push_back(f);

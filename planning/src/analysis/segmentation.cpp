@@ -3,6 +3,8 @@
 #include <ddfcam/error.h>
 #include <ddfcam/planning/analysis/segmentation.h>
 
+#include "hsv_color.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -42,14 +44,7 @@ std::vector<int> faceMajority(const ddf::DisplacementField& ddf, const std::vect
 // HSV -> RGB with the hue stepped by the golden ratio, so neighbouring indices differ clearly
 // and no two indices share a hue.
 std::array<float, 3> regionColor(int index) {
-  const double hue = std::fmod(0.08 + 0.6180339887498949 * index, 1.0) * 6.0;
-  const double s = 0.6, v = 0.92, c = s * v;
-  const double x = c * (1.0 - std::abs(std::fmod(hue, 2.0) - 1.0));
-  const double r[6] = {c, x, 0, 0, x, c}, g[6] = {x, c, c, x, 0, 0}, b[6] = {0, 0, x, c, c, x};
-  const int sector = std::min(5, static_cast<int>(hue));
-  const double m = v - c;
-  return {static_cast<float>(r[sector] + m), static_cast<float>(g[sector] + m),
-          static_cast<float>(b[sector] + m)};
+  return detail::hsvColor(0.08 + 0.6180339887498949 * index, 0.6, 0.92);
 }
 
 // A connected set of faces while merging.

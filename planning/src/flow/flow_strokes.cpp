@@ -3,11 +3,11 @@
 #include "flow_strokes.h"
 
 #include <ddfcam/error.h>
+#include <ddfcam/planning/surface/uniform_grid.h>
 
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -58,48 +58,13 @@ bool closer(double d, const Segment& s, double bestD, const Segment* best) {
   return lexLess(s.b, best->b);
 }
 
-// Uniform grid of cell size r over the active points, as sorted (cell key, point) pairs.
-class PointGrid {
- public:
-  PointGrid(const SurfaceFrames& frames, const std::vector<std::uint8_t>& active, double r)
-      : r_(r) {
-    for (std::size_t p = 0; p < active.size(); ++p)
-      if (active[p]) entries_.emplace_back(key(cell(frames.position[p])), p);
-    std::sort(entries_.begin(), entries_.end());
-  }
-  // Calls fn(point) for the points in the cells overlapping box [lo, hi].
-  template <class Fn>
-  void visit(const Vec3& lo, const Vec3& hi, Fn&& fn) const {
-    const std::array<long, 3> a = cell(lo), b = cell(hi);
-    for (long x = a[0]; x <= b[0]; ++x)
-      for (long y = a[1]; y <= b[1]; ++y)
-        for (long z = a[2]; z <= b[2]; ++z) {
-          const std::uint64_t k = key({x, y, z});
-          auto it = std::lower_bound(entries_.begin(), entries_.end(), std::make_pair(k, 0ul));
-          for (; it != entries_.end() && it->first == k; ++it) fn(it->second);
-        }
-  }
-
- private:
-  std::array<long, 3> cell(const Vec3& x) const {
-    return {std::lround(std::floor(x.x() / r_)), std::lround(std::floor(x.y() / r_)),
-            std::lround(std::floor(x.z() / r_))};
-  }
-  static std::uint64_t key(const std::array<long, 3>& c) {
-    constexpr long kBias = 1 << 20;  // 21 bits per axis cover +-1e6 cells
-    std::uint64_t k = 0;
-    for (long v : c) k = (k << 21) | static_cast<std::uint64_t>((v + kBias) & 0x1fffff);
-    return k;
-  }
-  double r_;
-  std::vector<std::pair<std::uint64_t, std::size_t>> entries_;
-};
-
 // Long segments are visited in pieces no longer than r so each piece touches few cells.
 std::vector<const Segment*> nearWithin(const SurfaceFrames& frames,
                                        const std::vector<std::uint8_t>& active,
                                        const std::vector<Segment>& segments, double r) {
-  const PointGrid grid(frames, active, r);
+  UniformGrid grid(r);
+  for (std::size_t p = 0; p < active.size(); ++p)
+    if (active[p]) grid.add(static_cast<int>(p), frames.position[p]);
   std::vector<const Segment*> best(active.size(), nullptr);
   std::vector<double> bestD(active.size(), std::numeric_limits<double>::infinity());
   for (const Segment& s : segments) {
@@ -108,7 +73,7 @@ std::vector<const Segment*> nearWithin(const SurfaceFrames& frames,
       const Vec3 u = s.a + (s.b - s.a) * (double(i) / pieces);
       const Vec3 v = s.a + (s.b - s.a) * (double(i + 1) / pieces);
       const Vec3 pad = Vec3::Constant(r);
-      grid.visit(u.cwiseMin(v) - pad, u.cwiseMax(v) + pad, [&](std::size_t p) {
+      grid.forEachInBox(u.cwiseMin(v) - pad, u.cwiseMax(v) + pad, [&](int p) {
         const double d = distance(s, frames.position[p]);
         if (d <= r && closer(d, s, bestD[p], best[p])) bestD[p] = d, best[p] = &s;
       });

@@ -163,8 +163,8 @@ class Coverage {
   // A seed is worth tracing: far enough from every line and from seeds that failed.
   bool validSeed(const SurfaceLocation& loc, const Vec3& normal, double slack) const {
     const double d = separation(loc);
-    return grid_.distance(loc.point, normal, slack * d) == kInf &&
-           failed_.distance(loc.point, normal, p_.testRatio * d) == kInf;
+    return !grid_.near(loc.point, normal, slack * d) &&
+           !failed_.near(loc.point, normal, p_.testRatio * d);
   }
 
   Streamline cut(Streamline line, const std::vector<Vec3>& normals, std::size_t& lo) const;
@@ -197,10 +197,10 @@ Streamline Coverage::cut(Streamline line, const std::vector<Vec3>& normals, std:
   SeparationGrid self(p_.separationMm);
   auto blocked = [&](std::size_t i) {
     const double test = p_.testRatio * separation(pts[i]);
-    if (grid_.distance(pts[i].point, normals[i], test) < kInf) return true;
+    if (grid_.near(pts[i].point, normals[i], test)) return true;
     if (loop) return false;  // a closed loop ends at its own seed on purpose
     const detail::SeparationSkip skip{0, arc[i], std::numbers::pi * test};
-    return self.distance(pts[i].point, normals[i], test, skip) < kInf;
+    return self.near(pts[i].point, normals[i], test, skip);
   };
   const std::size_t s = line.seedIndex;
   std::size_t hi = s;
@@ -271,7 +271,7 @@ void Coverage::seedsBeside(std::size_t li) {
       const Vec3 dir = sign * side.normalized();
       // Cheap rejection before walking: the tangent-plane estimate is within 0.5 d of a line,
       // so the seed (at most ~kappa d^2 / 2 from it) is closer than 0.99 d for kappa d < 0.98.
-      if (grid_.distance(at.point + d * dir, normal, 0.5 * d) < kInf) continue;
+      if (grid_.near(at.point + d * dir, normal, 0.5 * d)) continue;
       const auto seed = detail::walkOnSurface(ddf_, at, dir, d, kWalkSubSteps, p_.faceMask);
       if (!seed || !validSeed(*seed, surfaceNormal(ddf_, *seed), kSeedSlack)) continue;
       tryLine(*seed);

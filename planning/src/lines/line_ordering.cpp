@@ -9,17 +9,25 @@ namespace ddfcam::planning {
 
 void dropRepeatedPoints(Streamline& line) {
   constexpr double kEpsMm = 1e-6;
+  const auto same = [](const ddf::SurfaceLocation& a, const ddf::SurfaceLocation& b) {
+    return (a.point - b.point).norm() <= kEpsMm;
+  };
+  const std::size_t seedIn =
+      std::min(line.seedIndex, std::max<std::size_t>(line.points.size(), 1) - 1);
   std::vector<ddf::SurfaceLocation> kept;
-  for (const ddf::SurfaceLocation& q : line.points) {
-    if (!kept.empty() && (q.point - kept.back().point).norm() <= kEpsMm) continue;
-    if (kept.size() >= 2 && (q.point - kept[kept.size() - 2].point).norm() <= kEpsMm) {
+  std::size_t seed = 0;  // where the seed, or the point kept in its place, ends up
+  for (std::size_t i = 0; i < line.points.size(); ++i) {
+    const ddf::SurfaceLocation& q = line.points[i];
+    if (kept.size() >= 2 && !same(q, kept.back()) && same(q, kept[kept.size() - 2])) {
       kept.pop_back();
-      continue;
+      seed = std::min(seed, kept.size() - 1);
+    } else if (kept.empty() || !same(q, kept.back())) {
+      kept.push_back(q);
     }
-    kept.push_back(q);
+    if (i == seedIn) seed = kept.size() - 1;
   }
   line.points = std::move(kept);
-  line.seedIndex = std::min(line.seedIndex, line.points.empty() ? 0 : line.points.size() - 1);
+  line.seedIndex = seed;
 }
 
 Streamline reversedStreamline(Streamline line) {

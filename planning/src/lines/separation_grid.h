@@ -1,16 +1,14 @@
 // SPDX-License-Identifier: MIT
-// ddfcam: incremental uniform grid of polyline segments for distance queries (private).
+// ddfcam: incremental grid of polyline segments for distance queries (private).
 #pragma once
 
 #include <ddfcam/ddf/support_mesh.h>
-
-#include <Eigen/Core>
+#include <ddfcam/planning/surface/uniform_grid.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
+#include <cstddef>
 #include <limits>
-#include <unordered_map>
 #include <vector>
 
 namespace ddfcam::planning::detail {
@@ -23,24 +21,19 @@ struct SeparationSkip {
   double arcGapMm = 0.0;
 };
 
-/// @brief Segments of accepted polylines in a hashed uniform grid (cell size c, mm). Each
-/// segment is entered in every cell its bounding box overlaps, so a query of radius r looks at
-/// the (2 ceil(r / c) + 1)^3 cells around the point. Segments carry the surface normal at their
-/// start, the polyline they belong to and their arc position, so a query can ignore the far
-/// side of a thin wall and the neighbourhood of its own position on the same line.
+/// @brief Segments of accepted polylines in a UniformGrid (cell size c, mm), added while the
+/// lines grow. Segments carry the surface normal at their start, the polyline they belong to
+/// and their arc position, so a query can ignore the far side of a thin wall and the
+/// neighbourhood of its own position on the same line.
 class SeparationGrid {
  public:
-  explicit SeparationGrid(double cellMm) : cell_(cellMm) {}
+  explicit SeparationGrid(double cellMm) : grid_(cellMm) {}
 
   /// @brief Adds segment a -> b of polyline @p line starting at arc length @p arcMm.
   void add(const ddf::Vec3& a, const ddf::Vec3& b, const ddf::Vec3& normal, int line,
            double arcMm) {
-    const auto id = static_cast<int>(segments_.size());
+    grid_.add(static_cast<int>(segments_.size()), a.cwiseMin(b), a.cwiseMax(b));
     segments_.push_back({a, b, normal, line, arcMm});
-    const Eigen::Vector3i lo = cellOf(a.cwiseMin(b)), hi = cellOf(a.cwiseMax(b));
-    for (int x = lo.x(); x <= hi.x(); ++x)
-      for (int y = lo.y(); y <= hi.y(); ++y)
-        for (int z = lo.z(); z <= hi.z(); ++z) cells_[key({x, y, z})].push_back(id);
   }
 
   /// @brief Smallest distance from @p q (surface normal @p normal) to a segment, if one is
@@ -49,26 +42,23 @@ class SeparationGrid {
                   const SeparationSkip& skip = {}, int* nearestId = nullptr) const {
     double best = std::numeric_limits<double>::infinity();
     int bestId = -1;
-    if (!segments_.empty()) {
-      const int reach = std::max(1, static_cast<int>(std::ceil(radiusMm / cell_)));
-      const Eigen::Vector3i c = cellOf(q);
-      for (int x = -reach; x <= reach; ++x)
-        for (int y = -reach; y <= reach; ++y)
-          for (int z = -reach; z <= reach; ++z) {
-            const auto it = cells_.find(key(c + Eigen::Vector3i(x, y, z)));
-            if (it == cells_.end()) continue;
-            for (const int id : it->second) {
-              const Segment& s = segments_[id];
-              if (s.normal.dot(normal) < 0.0) continue;
-              if (s.line == skip.line && std::abs(s.arcMm - skip.arcMm) < skip.arcGapMm) continue;
-              const double d = segmentDistance(q, s);
-              if (d < best) best = d, bestId = id;
-            }
-          }
-    }
+    grid_.forEachNear(q, radiusMm, [&](int id) {
+      if (!counts(segments_[id], normal, skip)) return;
+      const double d = segmentDistance(q, segments_[id]);
+      if (d < best) best = d, bestId = id;
+    });
     if (!(best < radiusMm)) best = std::numeric_limits<double>::infinity(), bestId = -1;
     if (nearestId) *nearestId = bestId;
     return best;
+  }
+
+  /// @brief Whether distance() would be finite: some segment lies closer than @p radiusMm
+  /// (stops at the first one found).
+  bool near(const ddf::Vec3& q, const ddf::Vec3& normal, double radiusMm,
+            const SeparationSkip& skip = {}) const {
+    return grid_.findNear(q, radiusMm, [&](int id) {
+      return counts(segments_[id], normal, skip) && segmentDistance(q, segments_[id]) < radiusMm;
+    });
   }
 
   /// @brief Whether segment @p id (from distance()) faces like @p normal and lies closer than
@@ -88,13 +78,9 @@ class SeparationGrid {
     double arcMm;
   };
 
-  Eigen::Vector3i cellOf(const ddf::Vec3& p) const {
-    return (p / cell_).array().floor().cast<int>();
-  }
-  static std::int64_t key(const Eigen::Vector3i& c) {
-    // 21 bits per axis: +-1e6 cells, far more than any part at a sensible spacing.
-    const auto part = [](int v) { return static_cast<std::int64_t>(v + (1 << 20)) & 0x1FFFFF; };
-    return (part(c.x()) << 42) | (part(c.y()) << 21) | part(c.z());
+  static bool counts(const Segment& s, const ddf::Vec3& normal, const SeparationSkip& skip) {
+    return !(s.normal.dot(normal) < 0.0) &&
+           !(s.line == skip.line && std::abs(s.arcMm - skip.arcMm) < skip.arcGapMm);
   }
   static double segmentDistance(const ddf::Vec3& q, const Segment& s) {
     const ddf::Vec3 ab = s.b - s.a;
@@ -103,9 +89,8 @@ class SeparationGrid {
     return (s.a + t * ab - q).norm();
   }
 
-  double cell_;
+  UniformGrid grid_;
   std::vector<Segment> segments_;
-  std::unordered_map<std::int64_t, std::vector<int>> cells_;
 };
 
 }  // namespace ddfcam::planning::detail

@@ -5,6 +5,7 @@
 #include "spacing_workpiece.h"
 
 #include <ddfcam/error.h>
+#include <ddfcam/planning/lines/line_ordering.h>
 
 #include <algorithm>
 #include <cmath>
@@ -84,7 +85,9 @@ class Refiner {
 
  private:
   Streamline trace(const ddf::SurfaceLocation& seed) const {
-    return spacing::withoutRepeatedPoints(traceStreamline(goal_, field_, seed, tracing_));
+    Streamline line = traceStreamline(goal_, field_, seed, tracing_);
+    dropRepeatedPoints(line);
+    return line;
   }
 
   void cut(const std::vector<Streamline>& lines) {

@@ -143,19 +143,6 @@ double distanceToLine(const ddf::Vec3& p, const Streamline& line) {
   return best;
 }
 
-Streamline withoutRepeatedPoints(Streamline line) {
-  std::vector<ddf::SurfaceLocation> kept;
-  std::size_t seed = 0;
-  for (std::size_t i = 0; i < line.points.size(); ++i) {
-    const bool repeat = !kept.empty() && (line.points[i].point - kept.back().point).norm() < 1e-9;
-    if (!repeat) kept.push_back(line.points[i]);
-    if (i == line.seedIndex) seed = kept.size() - 1;
-  }
-  line.points = std::move(kept);
-  line.seedIndex = seed;
-  return line;
-}
-
 ToolPath placeLines(const ddf::DisplacementField& goal, const std::vector<Streamline>& lines,
                     const Tool& tool, int toolIndex, const StreamlinePathParams& pathParams,
                     double feedToleranceMm) {

@@ -53,10 +53,6 @@ ddf::SurfaceLocation regionCentreLocation(const ddf::DisplacementField& goal,
 /// @brief Distance from @p p to the polyline of @p line, mm (infinity for no points).
 double distanceToLine(const ddf::Vec3& p, const Streamline& line);
 
-/// @brief @p line without points that repeat their predecessor (closer than 1e-9 mm), which
-/// would leave the tool placement without a feed direction; seedIndex follows its point.
-Streamline withoutRepeatedPoints(Streamline line);
-
 /// @brief The tool path of @p lines: placeAlongPath() with the infeed, name and feed of
 /// @p pathParams, the sampling step bounded by @p feedToleranceMm (feed chord and cusp between
 /// consecutive poses) and by the raster spacing.

@@ -20,12 +20,6 @@ double snap(double x) {
   return std::abs(x - r) < 1e-9 ? r : x;
 }
 
-std::int64_t cellKey(const Eigen::Vector3i& c) {
-  return (static_cast<std::int64_t>(c.x()) * 73856093) ^
-         (static_cast<std::int64_t>(c.y()) * 19349663) ^
-         (static_cast<std::int64_t>(c.z()) * 83492791);
-}
-
 SurfaceJacobian jacobianFrom(const ddf::DisplacementField& ddf, int face, const Vec3& mu, double h,
                              double ha, double hc) {
   const auto& fv = ddf.faceVertices(face);
@@ -157,46 +151,15 @@ Vec3 mapAcross(const ddf::DisplacementField& ddf, int from, int to, const Vec3& 
 }
 
 PathProximity::PathProximity(const std::vector<std::vector<Vec3>>& paths, double distanceMm)
-    : paths_(paths), distance_(distanceMm) {
+    : distance_(distanceMm), grid_(distanceMm > 0.0 ? distanceMm : 1.0) {
   if (!(distance_ > 0.0)) return;
-  for (int p = 0; p < static_cast<int>(paths.size()); ++p) {
-    const auto& path = paths[p];
-    for (int s = 0; s < static_cast<int>(path.size()); ++s) {
-      const Vec3& a = path[s];
-      const Vec3& b = path[std::min<std::size_t>(s + 1, path.size() - 1)];
-      const Eigen::Vector3i lo = cellOf(a.cwiseMin(b)), hi = cellOf(a.cwiseMax(b));
-      for (int x = lo.x(); x <= hi.x(); ++x)
-        for (int y = lo.y(); y <= hi.y(); ++y)
-          for (int z = lo.z(); z <= hi.z(); ++z) cells_[cellKey({x, y, z})].push_back({p, s});
-    }
-  }
+  for (const auto& path : paths)
+    for (std::size_t s = 0; s < path.size(); ++s)
+      grid_.add(path[s], path[std::min(s + 1, path.size() - 1)], Vec3::Zero(), -1, 0.0);
 }
 
 bool PathProximity::near(const Vec3& q) const {
-  if (cells_.empty()) return false;
-  const Eigen::Vector3i c = cellOf(q);
-  for (int x = -1; x <= 1; ++x)
-    for (int y = -1; y <= 1; ++y)
-      for (int z = -1; z <= 1; ++z) {
-        const auto it = cells_.find(cellKey(c + Eigen::Vector3i(x, y, z)));
-        if (it == cells_.end()) continue;
-        for (const auto& [p, s] : it->second)
-          if (segmentDistance(q, p, s) < distance_) return true;
-      }
-  return false;
-}
-
-Eigen::Vector3i PathProximity::cellOf(const Vec3& p) const {
-  return (p / distance_).array().floor().cast<int>();
-}
-
-double PathProximity::segmentDistance(const Vec3& q, int p, int s) const {
-  const auto& path = paths_[p];
-  const Vec3& a = path[s];
-  const Vec3 ab = path[std::min<std::size_t>(s + 1, path.size() - 1)] - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((q - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - q).norm();
+  return distance_ > 0.0 && grid_.near(q, Vec3::Zero(), distance_);
 }
 
 SurfaceLocation FieldSampler::locate(int face, const Vec3& bary) const {

@@ -7,13 +7,14 @@
 #include <ddfcam/planning/flow/line_field.h>
 #include <ddfcam/planning/lines/streamline.h>
 
+#include "separation_grid.h"
+
 #include <Eigen/Core>
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -59,8 +60,8 @@ int faceAcross(const ddf::DisplacementField& ddf, int face, int corner);
 /// (a point on their shared edge).
 Vec3 mapAcross(const ddf::DisplacementField& ddf, int from, int to, const Vec3& bary, int dropped);
 
-/// Existing paths in a uniform grid of cell size = the stop distance, each segment entered in
-/// every cell its bounding box overlaps, so a query looks at the 27 cells around a point.
+/// Existing paths in a SeparationGrid of cell size = the stop distance (no normals, so no
+/// segment is ignored); nothing is near when the distance is not positive.
 class PathProximity {
  public:
   PathProximity(const std::vector<std::vector<Vec3>>& paths, double distanceMm);
@@ -68,12 +69,8 @@ class PathProximity {
   bool near(const Vec3& q) const;
 
  private:
-  Eigen::Vector3i cellOf(const Vec3& p) const;
-  double segmentDistance(const Vec3& q, int p, int s) const;
-
-  const std::vector<std::vector<Vec3>>& paths_;
   double distance_;
-  std::unordered_map<std::int64_t, std::vector<std::pair<int, int>>> cells_;
+  SeparationGrid grid_;
 };
 
 /// Field direction at a point: unit tangent of the surface, the same direction as a

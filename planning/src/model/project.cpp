@@ -93,6 +93,12 @@ void checkPlan(const RegionPlan& plan, const std::string& regionItem, std::size_
     throw InvalidInput(item + ": feed sign " + std::to_string(plan.feedSign) + " must be +1 or -1");
 }
 
+void checkLinkedIdle(const ToolPath& path) {
+  if (path.linkedIdleMm && (!std::isfinite(*path.linkedIdleMm) || *path.linkedIdleMm < 0.0))
+    throw InvalidInput(quoted("path", path.name) + ": linked idle length " +
+                       text(*path.linkedIdleMm) + " mm must be finite and >= 0");
+}
+
 void checkPath(const ToolPath& path, std::size_t toolCount) {
   const std::string item = quoted("path", path.name);
   if (path.tool < 0 || static_cast<std::size_t>(path.tool) >= toolCount)
@@ -109,6 +115,30 @@ void checkPath(const ToolPath& path, std::size_t toolCount) {
     if (i > 0 && s <= path.passStarts[i - 1])
       throw InvalidInput(item + ": pass start " + std::to_string(s) + " at position " +
                          std::to_string(i) + " is not above its predecessor (must ascend)");
+  }
+  checkLinkedIdle(path);
+}
+
+// The raw lines are read back onto the part (smoothing, fairing): their faces must exist.
+void checkRawLines(const ToolPath& path, int faceCount) {
+  for (std::size_t l = 0; l < path.rawLines.size(); ++l) {
+    const Streamline& line = path.rawLines[l];
+    const std::string item = quoted("path", path.name) + ": raw line " + std::to_string(l);
+    if (!line.points.empty() && line.seedIndex >= line.points.size())
+      throw InvalidInput(item + ": seed index " + std::to_string(line.seedIndex) +
+                         " out of range (" + std::to_string(line.points.size()) + " points)");
+    for (const int stop : {static_cast<int>(line.stop), static_cast<int>(line.backwardStop)})
+      if (stop < 0 || stop > static_cast<int>(Streamline::MaxLength))
+        throw InvalidInput(item + ": unknown stop reason " + std::to_string(stop));
+    for (std::size_t i = 0; i < line.points.size(); ++i) {
+      const ddf::SurfaceLocation& p = line.points[i];
+      if (p.face < 0 || p.face >= faceCount)
+        throw InvalidInput(item + ": point " + std::to_string(i) + " on face " +
+                           std::to_string(p.face) + " out of range [0, " +
+                           std::to_string(faceCount) + ")");
+      if (!finiteVec(p.bary) || !finiteVec(p.point) || !std::isfinite(p.h))
+        throw InvalidInput(item + ": point " + std::to_string(i) + " is not finite");
+    }
   }
 }
 
@@ -142,6 +172,7 @@ void checkPartItems(const Project& project) {
     checkRegion(region, part.faceCount());
     checkPlan(region.plan, quoted("region", region.name), project.tools.size());
   }
+  for (const ToolPath& path : project.paths) checkRawLines(path, part.faceCount());
 }
 
 bool sameMesh(const ddf::TriangleMesh& a, const ddf::TriangleMesh& b) {
@@ -162,9 +193,22 @@ bool samePose(const PathPose& a, const PathPose& b) {
          sameBits(a.contact, b.contact);
 }
 
+bool sameLocation(const ddf::SurfaceLocation& a, const ddf::SurfaceLocation& b) {
+  return a.face == b.face && sameBits(a.bary, b.bary) && sameBits(a.h, b.h) &&
+         sameBits(a.point, b.point);
+}
+
+bool sameLine(const Streamline& a, const Streamline& b) {
+  return a.stop == b.stop && a.backwardStop == b.backwardStop && a.seedIndex == b.seedIndex &&
+         sameBits(a.lengthMm, b.lengthMm) && sameEach(a.points, b.points, sameLocation);
+}
+
 bool samePath(const ToolPath& a, const ToolPath& b) {
   return a.name == b.name && a.tool == b.tool && sameBits(a.feedMmPerMin, b.feedMmPerMin) &&
-         a.passStarts == b.passStarts && sameEach(a.poses, b.poses, samePose);
+         a.passStarts == b.passStarts && sameEach(a.poses, b.poses, samePose) &&
+         sameEach(a.rawLines, b.rawLines, sameLine) &&
+         sameOptional(a.linkedIdleMm, b.linkedIdleMm,
+                      [](double x, double y) { return sameBits(x, y); });
 }
 
 bool sameField(const ScalarField& a, const ScalarField& b) {

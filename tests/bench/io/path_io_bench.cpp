@@ -5,10 +5,10 @@
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/io/programs/apt_reader.h>
 #include <ddfcam/io/programs/apt_writer.h>
-#include <ddfcam/io/programs/cl_program.h>
 #include <ddfcam/io/programs/gcode_writer.h>
-#include <ddfcam/io/programs/imported_path.h>
 #include <ddfcam/io/programs/tool_path_csv.h>
+#include <ddfcam/planning/placement/cl_program.h>
+#include <ddfcam/planning/placement/imported_path.h>
 #include <ddfcam/planning/tools/tool.h>
 
 #include <benchmark/benchmark.h>
@@ -25,10 +25,10 @@ constexpr int kPoints = 200'000;
 
 /// A 5-axis finishing program: rows of a wavy 200 x 100 mm field, the axis leaning up to 30 deg
 /// so the G-code's inverse kinematics has real work; 1000 points per row, tip as the point.
-io::ClProgram wavyProgram(int points) {
-  io::ClProgram program;
+planning::ClProgram wavyProgram(int points) {
+  planning::ClProgram program;
   program.partName = "wavy";
-  program.pointKind = io::ClPointKind::ToolReference;
+  program.pointKind = planning::ClPointKind::ToolReference;
   constexpr int kPerRow = 1000;
   for (int i = 0; i < points; ++i) {
     const int row = i / kPerRow;
@@ -36,7 +36,7 @@ io::ClProgram wavyProgram(int points) {
     const double y = 0.5 * row;
     const double z = 3.0 * std::sin(x / 20.0) * std::cos(y / 15.0);
     const double lean = 0.5 * std::sin(x / 40.0 + y / 30.0);  // up to ~29 deg
-    io::ClPoint p;
+    planning::ClPoint p;
     p.path = row;
     p.point = i % kPerRow;
     p.positionMm = {x, y, z};
@@ -47,8 +47,8 @@ io::ClProgram wavyProgram(int points) {
   return program;
 }
 
-const io::ClProgram& program() {
-  static const io::ClProgram p = wavyProgram(kPoints);
+const planning::ClProgram& program() {
+  static const planning::ClProgram p = wavyProgram(kPoints);
   return p;
 }
 
@@ -87,12 +87,12 @@ void BM_PathCsvReadNaiveStreams(benchmark::State& state) {
     std::istringstream in(csvText());
     std::string line;
     std::getline(in, line);  // header
-    std::vector<io::ClPoint> points;
+    std::vector<planning::ClPoint> points;
     while (std::getline(in, line)) {
       for (char& c : line)
         if (c == ',') c = ' ';
       std::istringstream fields(line);
-      io::ClPoint p;
+      planning::ClPoint p;
       ddf::Vec3 axis, normal;
       std::string move;
       fields >> p.path >> p.point >> p.positionMm.x() >> p.positionMm.y() >> p.positionMm.z() >>
@@ -136,17 +136,17 @@ BENCHMARK(BM_PathGCodeWrite5Axis)->Unit(benchmark::kMillisecond);
 void BM_PlaceImportedProgram(benchmark::State& state) {
   const ddf::GeneratedSurface part = ddf::demoPart();
   const planning::Tool ball{.kind = planning::ToolKind::BallEnd, .radiusMm = 3.0, .widthMm = 6.0};
-  io::ClProgram raster;
+  planning::ClProgram raster;
   const int n = part.ddf.raster().m - 1;
   for (int i = 0; i < 2000; ++i) {
-    io::ClPoint p;
+    planning::ClPoint p;
     p.path = i / 50;
     p.point = i % 50;
     p.positionMm = part.ddf.surfacePoint(i % part.ddf.faceCount(), n / 3, n / 3);
     p.feedMmPerMin = 1000.0;
     raster.points.push_back(p);
   }
-  for (auto _ : state) benchmark::DoNotOptimize(io::placeProgram(raster, ball, part.ddf));
+  for (auto _ : state) benchmark::DoNotOptimize(planning::placeProgram(raster, ball, part.ddf));
   state.SetItemsProcessed(state.iterations() * 2000);
 }
 BENCHMARK(BM_PlaceImportedProgram)->Unit(benchmark::kMillisecond);

@@ -191,43 +191,72 @@ struct CurvatureComparison {
   double k1Max = 0.0, k1Sum = 0.0, k2Max = 0.0, k2Sum = 0.0, angleMax = 0.0, angleSum = 0.0;
 };
 
-// The DDF's k_max, k_min and k_max direction against the exact k1, k2 and dir1 at the raster
-// points of the CAD faces of type @p surfaceType at least @p marginMm from their borders.
-/// How compareCurvature() converts the part and estimates its curvature.
-struct CurvatureSetup {
-  bool labels = false;   // the CAD faces as fit labels (input support)
-  bool reduced = false;  // reduced support, curvature as the workbench asks for it
-  planning::CurvatureMethod method = planning::CurvatureMethod::Automatic;
+/// How a shared part is converted for the comparisons below.
+struct ConversionSetup {
+  bool reduced = false;  // reduced support, as the workbench converts
   int resolution = 5;
 };
 
-CurvatureComparison compareCurvature(const std::string& file, double toleranceMm,
-                                     const std::string& surfaceType, double marginMm,
-                                     const CurvatureSetup& setup) {
+/// A shared part converted once, with its exact model, for several comparisons: converting and
+/// reading the STEP file is most of a comparison's time.
+struct ConvertedCad {
+  std::string file;
+  bool reduced = false;
+  planning::Project project;
+  LoadPartReport report;
+  CadModel model;
+};
+
+ConvertedCad convertCad(const std::string& file, double toleranceMm, const ConversionSetup& setup) {
   const auto path = cadPath(file);
   LoadPartParams params;
   params.conversion.resolution = setup.resolution;
   params.conversion.toleranceMm = toleranceMm;
   if (setup.reduced) params.conversion.support = ddf::SupportChoice::Reduced;
-  LoadPartReport report;
-  const planning::Project project = openProject(path, params, &report);
-  const ddf::DisplacementField& part = *project.part;
+  ConvertedCad out{file, setup.reduced, {}, {}, readCadModel(path)};
+  out.project = openProject(path, params, &out.report);
+  return out;
+}
+
+/// How compareCurvature() estimates the curvature of a converted part.
+struct CurvatureSetup {
+  bool labels = false;  // the CAD faces as fit labels (input support)
+  planning::CurvatureMethod method = planning::CurvatureMethod::Automatic;
+};
+
+/// The curvature of @p part estimated as @p setup asks (a reduced part as the workbench asks
+/// for it), and the seconds it took.
+std::pair<planning::CurvatureField, double> estimateCurvature(const ConvertedCad& part,
+                                                              const CurvatureSetup& setup) {
   const auto start = std::chrono::steady_clock::now();
-  planning::CurvatureParams curvatureParams;
-  if (setup.reduced) curvatureParams = planning::partCurvatureParams(project);
-  if (setup.labels) curvatureParams.faceLabels = report.cadFaceOfSupportFace;
-  curvatureParams.method = setup.method;
-  const planning::CurvatureField curvature = planning::computeCurvature(part, curvatureParams);
+  planning::CurvatureParams params;
+  if (part.reduced) params = planning::partCurvatureParams(part.project);
+  if (setup.labels) params.faceLabels = part.report.cadFaceOfSupportFace;
+  params.method = setup.method;
+  planning::CurvatureField curvature = planning::computeCurvature(*part.project.part, params);
+  return {std::move(curvature),
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+}
+
+// The DDF's k_max, k_min and k_max direction (@p curvature) against the exact k1, k2 and dir1
+// at the raster points of the CAD faces of type @p surfaceType at least @p marginMm from their
+// borders.
+CurvatureComparison compareCurvature(const ConvertedCad& converted,
+                                     const std::pair<planning::CurvatureField, double>& estimate,
+                                     const std::string& surfaceType, double marginMm,
+                                     const CurvatureSetup& setup) {
+  const ddf::DisplacementField& part = *converted.project.part;
+  const LoadPartReport& report = converted.report;
+  const planning::CurvatureField& curvature = estimate.first;
   CurvatureComparison out;
-  out.timeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const CadModel model = readCadModel(path);
-  const CadSurfaceQuery query(model);
+  out.timeSeconds = estimate.second;
+  const CadSurfaceQuery query(converted.model);
   std::vector<Vector3d> points;
   std::vector<std::pair<int, std::size_t>> sites;  // CAD face, allHeights index
   const int steps = part.resolution() - 1;
   for (int f = 0; f < part.faceCount(); ++f) {
     const int cadFace = report.cadFaceOfSupportFace[f];
-    if (model.faces()[cadFace].surfaceType != surfaceType) continue;
+    if (converted.model.faces()[cadFace].surfaceType != surfaceType) continue;
     for (int k = 0; k <= steps; ++k)
       for (int i = 0; i <= steps - k; ++i) {
         points.push_back(part.surfacePoint(f, i, k));
@@ -253,11 +282,19 @@ CurvatureComparison compareCurvature(const std::string& file, double toleranceMm
       "[%s%s%s] %d faces (m = %d), %s raster points >= %.3g mm from their face borders: %d; "
       "|dk_max| max %.3g mean %.3g, |dk_min| max %.3g mean %.3g 1/mm, k_max direction max "
       "%.3g mean %.3g rad; curvature %.3f s\n",
-      file.c_str(), setup.labels ? ", CAD labels" : "", setup.reduced ? ", reduced" : "",
-      part.faceCount(), part.resolution(), surfaceType.c_str(), marginMm, out.points, out.k1Max,
-      out.k1Sum / std::max(out.points, 1), out.k2Max, out.k2Sum / std::max(out.points, 1),
-      out.angleMax, out.angleSum / std::max(out.points, 1), out.timeSeconds);
+      converted.file.c_str(), setup.labels ? ", CAD labels" : "",
+      converted.reduced ? ", reduced" : "", part.faceCount(), part.resolution(),
+      surfaceType.c_str(), marginMm, out.points, out.k1Max, out.k1Sum / std::max(out.points, 1),
+      out.k2Max, out.k2Sum / std::max(out.points, 1), out.angleMax,
+      out.angleSum / std::max(out.points, 1), out.timeSeconds);
   return out;
+}
+
+/// compareCurvature() with the curvature estimated for this comparison alone.
+CurvatureComparison compareCurvature(const ConvertedCad& converted, const std::string& surfaceType,
+                                     double marginMm, const CurvatureSetup& setup) {
+  return compareCurvature(converted, estimateCurvature(converted, setup), surfaceType, marginMm,
+                          setup);
 }
 
 TEST(CadCurvatureShared, DdfCurvatureOnStripTessellatedCylindersMatchesTheExactCurvature) {
@@ -273,8 +310,10 @@ TEST(CadCurvatureShared, DdfCurvatureOnStripTessellatedCylindersMatchesTheExactC
   // away from the borders. Before, the fits mixed the end caps in: |dk_max| up to 0.052 1/mm
   // (5 x 1/r) on sliced_cylinder and 10 1/mm (20 x 1/r) on bolt_clip, directions off by 90
   // degrees.
-  const CurvatureComparison all =
-      compareCurvature("sliced_cylinder.step", 0.5, "cylinder", 0.0, {});
+  // Each part is converted once and its curvature estimated once per setup.
+  const ConvertedCad sliced = convertCad("sliced_cylinder.step", 0.5, {});
+  const auto slicedCurvature = estimateCurvature(sliced, {});
+  const CurvatureComparison all = compareCurvature(sliced, slicedCurvature, "cylinder", 0.0, {});
   const double k = 0.01;  // 1/r, 1/mm
   ASSERT_GT(all.points, 2000);
   EXPECT_LT(all.k1Max, 0.2 * k);
@@ -282,8 +321,7 @@ TEST(CadCurvatureShared, DdfCurvatureOnStripTessellatedCylindersMatchesTheExactC
   EXPECT_LT(all.k2Max, 0.01 * k);
   EXPECT_LT(all.angleMax, 0.05);  // rad
   EXPECT_LT(all.angleSum / all.points, 0.002);
-  const CurvatureComparison inner =
-      compareCurvature("sliced_cylinder.step", 0.5, "cylinder", 10.0, {});
+  const CurvatureComparison inner = compareCurvature(sliced, slicedCurvature, "cylinder", 10.0, {});
   ASSERT_GT(inner.points, 1000);
   EXPECT_LT(inner.k1Max, 0.05 * k);
   EXPECT_LT(inner.k2Max, 0.01 * k);
@@ -291,8 +329,11 @@ TEST(CadCurvatureShared, DdfCurvatureOnStripTessellatedCylindersMatchesTheExactC
   // bolt_clip's cylinders of r ~ 2 mm run tangentially into tori: at such an edge the
   // curvature jumps and a fit across it is half torus, so the CAD faces split the fits there
   // (without them the measured |dk| on these faces is up to 0.7 1/mm away from the borders).
+  const ConvertedCad boltClip = convertCad("bolt_clip.step", 0.005, {});
+  const CurvatureSetup labels{.labels = true};
+  const auto clipCurvature = estimateCurvature(boltClip, labels);
   const CurvatureComparison clip =
-      compareCurvature("bolt_clip.step", 0.005, "cylinder", 0.2, {.labels = true});
+      compareCurvature(boltClip, clipCurvature, "cylinder", 0.2, labels);
   ASSERT_GT(clip.points, 3000);
   const double clipK = 0.49;  // the smaller 1/r of its cylinders, 1/mm
   EXPECT_LT(clip.k1Max, 0.01 * clipK);
@@ -300,10 +341,10 @@ TEST(CadCurvatureShared, DdfCurvatureOnStripTessellatedCylindersMatchesTheExactC
   EXPECT_LT(clip.angleMax, 0.02);
   EXPECT_LT(clip.angleSum / clip.points, 0.002);
   const CurvatureComparison clipAll =
-      compareCurvature("bolt_clip.step", 0.005, "cylinder", 0.0, {.labels = true});
+      compareCurvature(boltClip, clipCurvature, "cylinder", 0.0, labels);
   EXPECT_LT(clipAll.k1Max, 0.5 * clipK);
   EXPECT_LT(clipAll.k1Sum / clipAll.points, 0.01 * clipK);
-  compareCurvature("bolt_clip.step", 0.005, "cylinder", 0.2, {});  // printed only
+  compareCurvature(boltClip, "cylinder", 0.2, {});  // printed only
 }
 
 TEST(CadCurvatureShared, ReducedSupportCurvatureComesFromTheDesignMeshAndMatchesTheExactCurvature) {
@@ -316,27 +357,27 @@ TEST(CadCurvatureShared, ReducedSupportCurvatureComesFromTheDesignMeshAndMatches
   // 2 % of it on the tori at every point 0.2 mm from the face borders. On the planes the fits
   // at the sharp border vertices reach a little further in, so only their mean is bounded.
   const double clipK = 0.49;
-  const CurvatureSetup workbench{.reduced = true, .resolution = 10};
+  const ConvertedCad reduced =
+      convertCad("bolt_clip.step", 0.005, {.reduced = true, .resolution = 10});
+  const CurvatureSetup workbench{};
+  const auto curvature = estimateCurvature(reduced, workbench);
   const CurvatureComparison cylinder =
-      compareCurvature("bolt_clip.step", 0.005, "cylinder", 0.2, workbench);
+      compareCurvature(reduced, curvature, "cylinder", 0.2, workbench);
   ASSERT_GT(cylinder.points, 3000);
   EXPECT_LT(std::max(cylinder.k1Max, cylinder.k2Max), 0.01 * clipK);
   EXPECT_LT(cylinder.angleMax, 0.05);
-  const CurvatureComparison torus =
-      compareCurvature("bolt_clip.step", 0.005, "torus", 0.2, workbench);
+  const CurvatureComparison torus = compareCurvature(reduced, curvature, "torus", 0.2, workbench);
   ASSERT_GT(torus.points, 10000);
   EXPECT_LT(std::max(torus.k1Max, torus.k2Max), 0.02 * clipK);
   EXPECT_LT(torus.k1Sum / torus.points, 0.005 * clipK);
-  const CurvatureComparison plane =
-      compareCurvature("bolt_clip.step", 0.005, "plane", 0.2, workbench);
+  const CurvatureComparison plane = compareCurvature(reduced, curvature, "plane", 0.2, workbench);
   ASSERT_GT(plane.points, 1000);
   EXPECT_LT(plane.k1Sum / plane.points, 0.01 * clipK);
   EXPECT_LT(plane.k2Sum / plane.points, 0.01 * clipK);
   // The same part by the raster differences: the oracle tells the two apart.
   CurvatureSetup differences = workbench;
   differences.method = planning::CurvatureMethod::RasterDifferences;
-  const CurvatureComparison raster =
-      compareCurvature("bolt_clip.step", 0.005, "torus", 0.2, differences);
+  const CurvatureComparison raster = compareCurvature(reduced, "torus", 0.2, differences);
   EXPECT_GT(raster.k1Sum / raster.points, 0.5 * clipK);
 }
 

@@ -19,6 +19,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -99,48 +100,60 @@ int openEdges(const ddf::TriangleMesh& mesh) {
       std::count_if(uses.begin(), uses.end(), [](const auto& entry) { return entry.second == 1; }));
 }
 
-TEST(CadPartShared, TessellationMeetsTheChordDeflectionAndStaysClosed) {
-  for (const Expected& expected : expectedParts()) {
-    const auto path = cadPath(expected.file);
-    REQUIRE_SHARED(path);
-    const CadModel model = readCadModel(path);
-    CadTessellationParams params;
-    params.chordDeflectionMm = 2e-4 * (expected.hi - expected.lo).norm();
-    const auto start = std::chrono::steady_clock::now();
-    const CadTessellation tessellation = tessellateCadModel(model, params);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    // Oracle: the global closest point of the exact model to each triangle's centroid and edge
-    // midpoints, on a deterministic sample of about 3000 triangles.
-    const CadSurfaceQuery query(model);
-    const auto& mesh = tessellation.mesh;
-    const std::size_t stride = std::max<std::size_t>(1, mesh.triangles.size() / 3000);
-    double maxMm = 0.0;
-    for (std::size_t t = 0; t < mesh.triangles.size(); t += stride) {
-      const auto& tri = mesh.triangles[t];
-      const Vector3d a = mesh.vertices[tri[0]], b = mesh.vertices[tri[1]],
-                     c = mesh.vertices[tri[2]];
-      for (const Vector3d& p : {Vector3d((a + b + c) / 3), Vector3d((a + b) / 2),
-                                Vector3d((b + c) / 2), Vector3d((c + a) / 2)}) {
-        const auto hit = query.project(p);
-        ASSERT_TRUE(hit.has_value()) << expected.file;
-        maxMm = std::max(maxMm, hit->distanceMm);
-      }
+// One test per shared part for the heavy checks below, so that each stays a short CTest test.
+class CadPartFile : public testing::TestWithParam<Expected> {};
+
+void PrintTo(const Expected& part, std::ostream* out) {
+  *out << part.file;
+}
+
+std::string partName(const testing::TestParamInfo<Expected>& info) {
+  std::string name = info.param.file;
+  return name.substr(0, name.find('.'));
+}
+
+INSTANTIATE_TEST_SUITE_P(Parts, CadPartFile, testing::ValuesIn(expectedParts()), partName);
+
+TEST_P(CadPartFile, TessellationMeetsTheChordDeflectionAndStaysClosed) {
+  const Expected& expected = GetParam();
+  const auto path = cadPath(expected.file);
+  REQUIRE_SHARED(path);
+  const CadModel model = readCadModel(path);
+  CadTessellationParams params;
+  params.chordDeflectionMm = 2e-4 * (expected.hi - expected.lo).norm();
+  const auto start = std::chrono::steady_clock::now();
+  const CadTessellation tessellation = tessellateCadModel(model, params);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // Oracle: the global closest point of the exact model to each triangle's centroid and edge
+  // midpoints, on a deterministic sample of about 3000 triangles.
+  const CadSurfaceQuery query(model);
+  const auto& mesh = tessellation.mesh;
+  const std::size_t stride = std::max<std::size_t>(1, mesh.triangles.size() / 3000);
+  double maxMm = 0.0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); t += stride) {
+    const auto& tri = mesh.triangles[t];
+    const Vector3d a = mesh.vertices[tri[0]], b = mesh.vertices[tri[1]], c = mesh.vertices[tri[2]];
+    for (const Vector3d& p : {Vector3d((a + b + c) / 3), Vector3d((a + b) / 2),
+                              Vector3d((b + c) / 2), Vector3d((c + a) / 2)}) {
+      const auto hit = query.project(p);
+      ASSERT_TRUE(hit.has_value()) << expected.file;
+      maxMm = std::max(maxMm, hit->distanceMm);
     }
-    std::printf(
-        "[%s] chord %.4g mm: BRepMesh %.4g mm, after re-meshing %zu faces %.4g mm (exact "
-        "projection of a sample: %.4g mm, model tolerance %.3g mm); %zu triangles, %d open "
-        "edges; %.2f s\n",
-        expected.file, params.chordDeflectionMm, tessellation.initialChordErrorMm,
-        tessellation.refinedFaces.size(), tessellation.chordErrorMm, maxMm, model.toleranceMm(),
-        mesh.triangles.size(), openEdges(mesh), seconds);
-    EXPECT_LE(tessellation.chordErrorMm, params.chordDeflectionMm) << expected.file;
-    // Near a face border the trimmed face is only defined to the model's own tolerance
-    // (boxed_sphere's edges lie up to 0.06 mm off their faces).
-    EXPECT_LE(maxMm, params.chordDeflectionMm + model.toleranceMm()) << expected.file;
-    if (model.solidCount() > 0) {
-      EXPECT_EQ(openEdges(mesh), 0) << expected.file;
-    }
+  }
+  std::printf(
+      "[%s] chord %.4g mm: BRepMesh %.4g mm, after re-meshing %zu faces %.4g mm (exact "
+      "projection of a sample: %.4g mm, model tolerance %.3g mm); %zu triangles, %d open "
+      "edges; %.2f s\n",
+      expected.file, params.chordDeflectionMm, tessellation.initialChordErrorMm,
+      tessellation.refinedFaces.size(), tessellation.chordErrorMm, maxMm, model.toleranceMm(),
+      mesh.triangles.size(), openEdges(mesh), seconds);
+  EXPECT_LE(tessellation.chordErrorMm, params.chordDeflectionMm) << expected.file;
+  // Near a face border the trimmed face is only defined to the model's own tolerance
+  // (boxed_sphere's edges lie up to 0.06 mm off their faces).
+  EXPECT_LE(maxMm, params.chordDeflectionMm + model.toleranceMm()) << expected.file;
+  if (model.solidCount() > 0) {
+    EXPECT_EQ(openEdges(mesh), 0) << expected.file;
   }
 }
 
@@ -157,43 +170,41 @@ std::vector<Vector3d> rasterSample(const ddf::DisplacementField& part, std::size
   return points;
 }
 
-TEST(CadPartShared, RepresentedSurfaceLiesWithinTheToleranceOfTheExactSurface) {
-  for (const Expected& expected : expectedParts()) {
-    const auto path = cadPath(expected.file);
-    REQUIRE_SHARED(path);
-    // boxed_sphere's edges lie up to 0.06 mm off their faces (CadModel::toleranceMm), more than
-    // 2e-3 x its diagonal: its tolerance is 1e-2 x the diagonal, which also keeps it quick.
-    const double share = std::string(expected.file) == "boxed_sphere.step" ? 1e-2 : 2e-3;
-    const double toleranceMm = share * (expected.hi - expected.lo).norm();
-    LoadPartParams params;
-    params.conversion.resolution = 4;
-    params.conversion.toleranceMm = toleranceMm;
-    LoadPartReport report;
-    const auto start = std::chrono::steady_clock::now();
-    const ddf::DisplacementField part = loadPart(path, params, &report);
-    const double loadSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const CadSurfaceQuery query(readCadModel(path));
-    const std::vector<Vector3d> points = rasterSample(part, 3000);
-    double maxMm = 0.0, sumMm = 0.0;
-    for (const Vector3d& p : points) {
-      const auto hit = query.project(p);
-      ASSERT_TRUE(hit.has_value()) << expected.file;
-      maxMm = std::max(maxMm, hit->distanceMm);
-      sumMm += hit->distanceMm;
-    }
-    std::printf(
-        "[%s] tolerance %.4g mm, chord %.4g mm: %d triangles -> %d faces (m = %d), %zu raster "
-        "points to the exact surface: max %.4g mm, mean %.4g mm; load %.2f s, measure %.2f s\n",
-        expected.file, toleranceMm, cadChordDeflectionMm(params.conversion, 0),
-        report.meshTriangles, part.faceCount(), part.resolution(), points.size(), maxMm,
-        sumMm / points.size(), loadSeconds,
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() -
-            loadSeconds);
-    EXPECT_LE(maxMm, toleranceMm) << expected.file;
-    EXPECT_EQ(static_cast<int>(report.cadFaceOfSupportFace.size()), part.faceCount());
-    EXPECT_EQ(static_cast<int>(report.cadFaceNames.size()), expected.faces);
+TEST_P(CadPartFile, RepresentedSurfaceLiesWithinTheToleranceOfTheExactSurface) {
+  const Expected& expected = GetParam();
+  const auto path = cadPath(expected.file);
+  REQUIRE_SHARED(path);
+  // boxed_sphere's edges lie up to 0.06 mm off their faces (CadModel::toleranceMm), more than
+  // 2e-3 x its diagonal: its tolerance is 1e-2 x the diagonal, which also keeps it quick.
+  const double share = std::string(expected.file) == "boxed_sphere.step" ? 1e-2 : 2e-3;
+  const double toleranceMm = share * (expected.hi - expected.lo).norm();
+  LoadPartParams params;
+  params.conversion.resolution = 4;
+  params.conversion.toleranceMm = toleranceMm;
+  LoadPartReport report;
+  const auto start = std::chrono::steady_clock::now();
+  const ddf::DisplacementField part = loadPart(path, params, &report);
+  const double loadSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const CadSurfaceQuery query(readCadModel(path));
+  const std::vector<Vector3d> points = rasterSample(part, 3000);
+  double maxMm = 0.0, sumMm = 0.0;
+  for (const Vector3d& p : points) {
+    const auto hit = query.project(p);
+    ASSERT_TRUE(hit.has_value()) << expected.file;
+    maxMm = std::max(maxMm, hit->distanceMm);
+    sumMm += hit->distanceMm;
   }
+  std::printf(
+      "[%s] tolerance %.4g mm, chord %.4g mm: %d triangles -> %d faces (m = %d), %zu raster "
+      "points to the exact surface: max %.4g mm, mean %.4g mm; load %.2f s, measure %.2f s\n",
+      expected.file, toleranceMm, cadChordDeflectionMm(params.conversion, 0), report.meshTriangles,
+      part.faceCount(), part.resolution(), points.size(), maxMm, sumMm / points.size(), loadSeconds,
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() -
+          loadSeconds);
+  EXPECT_LE(maxMm, toleranceMm) << expected.file;
+  EXPECT_EQ(static_cast<int>(report.cadFaceOfSupportFace.size()), part.faceCount());
+  EXPECT_EQ(static_cast<int>(report.cadFaceNames.size()), expected.faces);
 }
 
 }  // namespace

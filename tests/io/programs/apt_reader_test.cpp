@@ -17,7 +17,7 @@ namespace {
 using planning::MoveKind;
 using ::testing::HasSubstr;
 
-ClProgram read(const std::string& text, const AptReadParams& params = {}) {
+planning::ClProgram read(const std::string& text, const AptReadParams& params = {}) {
   return decodeApt(text, "snippet.apt", params);
 }
 
@@ -30,15 +30,15 @@ std::string errorOf(const std::string& text) {
   return "no error";
 }
 
-bool hasWarning(const ClProgram& p, const std::string& part) {
-  for (const ClMessage& m : p.warnings) {
+bool hasWarning(const planning::ClProgram& p, const std::string& part) {
+  for (const planning::ClMessage& m : p.warnings) {
     if (m.text.find(part) != std::string::npos) return true;
   }
   return false;
 }
 
 TEST(AptReader, ReadsCommentsContinuationBlanksAndCase) {
-  const ClProgram p = read(
+  const planning::ClProgram p = read(
       "$$ first comment\n"
       "partno / My Part\n"
       "units / mm\n"
@@ -59,7 +59,7 @@ TEST(AptReader, ReadsCommentsContinuationBlanksAndCase) {
   EXPECT_EQ(p.points[1].sourceLine, 5);
   EXPECT_EQ(p.points[2].sourceLine, 9);
   EXPECT_TRUE(p.warnings.empty());
-  EXPECT_EQ(p.pointKind, ClPointKind::ToolReference);
+  EXPECT_EQ(p.pointKind, planning::ClPointKind::ToolReference);
 }
 
 TEST(AptReader, ReadsPartnoWithAndWithoutSlash) {
@@ -68,7 +68,7 @@ TEST(AptReader, ReadsPartnoWithAndWithoutSlash) {
 }
 
 TEST(AptReader, ConvertsInchesAndFeedsInBothOrders) {
-  const ClProgram p = read(
+  const planning::ClProgram p = read(
       "UNITS / INCHES\n"
       "FEDRAT / 10.0, IPM\n"
       "GOTO / 1, 2, 3\n"
@@ -88,7 +88,7 @@ TEST(AptReader, ConvertsInchesAndFeedsInBothOrders) {
 }
 
 TEST(AptReader, InfersInchesFromTheFeedWordWithoutUnits) {
-  const ClProgram p = read("GOTO/1,0,0\nFEDRAT/IPM,10.0000\nGOTO/2,0,0\n");
+  const planning::ClProgram p = read("GOTO/1,0,0\nFEDRAT/IPM,10.0000\nGOTO/2,0,0\n");
   EXPECT_EQ(p.sourceUnit, LengthUnit::Inch);
   EXPECT_DOUBLE_EQ(p.points[0].positionMm.x(), 25.4);
   EXPECT_TRUE(hasWarning(p, "no UNITS record"));
@@ -96,7 +96,7 @@ TEST(AptReader, InfersInchesFromTheFeedWordWithoutUnits) {
 }
 
 TEST(AptReader, WarnsOnFeedPerRevolution) {
-  const ClProgram p = read("SPINDL/RPM,1000,CCLW\nFEDRAT/0.1,MMPR\nGOTO/1,0,0\n");
+  const planning::ClProgram p = read("SPINDL/RPM,1000,CCLW\nFEDRAT/0.1,MMPR\nGOTO/1,0,0\n");
   EXPECT_TRUE(hasWarning(p, "per revolution"));
   EXPECT_DOUBLE_EQ(p.points[0].feedMmPerMin, 100.0);
   EXPECT_DOUBLE_EQ(p.spindleRpm, 1000.0);
@@ -104,7 +104,7 @@ TEST(AptReader, WarnsOnFeedPerRevolution) {
 }
 
 TEST(AptReader, AppliesRapidToTheNextMotionOnlyAndStartsPathsAfterRapids) {
-  const ClProgram p = read(
+  const planning::ClProgram p = read(
       "FROM/0,0,100\n"
       "FEDRAT/300,MMPM\n"
       "RAPID\nGOTO/0,0,10\n"
@@ -128,7 +128,7 @@ TEST(AptReader, AppliesRapidToTheNextMotionOnlyAndStartsPathsAfterRapids) {
 }
 
 TEST(AptReader, TakesTheToolAxisFromSixValueGotosWithOrWithoutMultax) {
-  const ClProgram p = read("GOTO/0,0,0,0,0,2\nGOTO/1,0,0\nMULTAX/ON\nGOTO/1,1,0,0,3,4\n");
+  const planning::ClProgram p = read("GOTO/0,0,0,0,0,2\nGOTO/1,0,0\nMULTAX/ON\nGOTO/1,1,0,0,3,4\n");
   ASSERT_EQ(p.points.size(), 3u);
   EXPECT_EQ(p.points[0].axis, ddf::Vec3(0, 0, 1));
   EXPECT_EQ(p.points[1].axis, ddf::Vec3(0, 0, 1));  // the axis in force
@@ -137,7 +137,7 @@ TEST(AptReader, TakesTheToolAxisFromSixValueGotosWithOrWithoutMultax) {
 }
 
 TEST(AptReader, KeepsATiltedAxisOverThreeValueGotosUntilMultaxOff) {
-  const ClProgram p =
+  const planning::ClProgram p =
       read("GOTO/0,0,0\nGOTO/1,0,0,0,0.6,0.8\nGOTO/2,0,0\nGOTO/3,0,0\nMULTAX/OFF\nGOTO/4,0,0\n");
   ASSERT_EQ(p.points.size(), 5u);
   EXPECT_FALSE(p.points[0].axis.has_value());  // nothing given yet: 3-axis
@@ -147,10 +147,10 @@ TEST(AptReader, KeepsATiltedAxisOverThreeValueGotosUntilMultaxOff) {
   }
   EXPECT_FALSE(p.points[4].axis.has_value());
   // An arc after a tilted GOTO keeps the tilt on every interpolated point.
-  const ClProgram arc =
+  const planning::ClProgram arc =
       read("GOTO/1,0,0,0,0.6,0.8\nCIRCLE/0,0,0,0,0,1,1\nGOTO/0,1,0\n", {.chordToleranceMm = 0.01});
   ASSERT_GT(arc.points.size(), 3u);
-  for (const ClPoint& q : arc.points) {
+  for (const planning::ClPoint& q : arc.points) {
     ASSERT_TRUE(q.axis.has_value());
     EXPECT_NEAR((*q.axis - ddf::Vec3(0, 0.6, 0.8)).norm(), 0.0, 1e-15);
   }
@@ -163,44 +163,44 @@ TEST(AptReader, RefusesAProgramWithoutMotion) {
 }
 
 TEST(AptReader, KeepsEveryToolOfAMultiToolProgram) {
-  const ClProgram p = read(
+  const planning::ClProgram p = read(
       "LOADTL/1\nCUTTER/10,5\nGOTO/0,0,0\nGOTO/1,0,0\n"
       "LOADTL/2\nCUTTER/6\nRAPID\nGOTO/5,0,0\nGOTO/6,0,0\n"
       "LOADTL/2\nGOTO/7,0,0\n"  // the same tool again: no change
       "LOADTL/7\nCUTTER/3,1\nGOTO/8,0,0\n");
   ASSERT_EQ(p.points.size(), 6u);
   EXPECT_EQ(p.toolNumber, 1);
-  EXPECT_EQ(p.cutter, (ClCutter{10, 5, 0, 5, 0, 0, 0}));
+  EXPECT_EQ(p.cutter, (planning::ClCutter{10, 5, 0, 5, 0, 0, 0}));
   ASSERT_EQ(p.toolChanges.size(), 2u);
   EXPECT_EQ(p.toolChanges[0].firstPoint, 2u);
   EXPECT_EQ(p.toolChanges[0].toolNumber, 2);
-  EXPECT_EQ(p.toolChanges[0].cutter, (ClCutter{6, 0, 3, 0, 0, 0, 0}));
+  EXPECT_EQ(p.toolChanges[0].cutter, (planning::ClCutter{6, 0, 3, 0, 0, 0, 0}));
   EXPECT_EQ(p.toolChanges[0].sourceLine, 6);
   EXPECT_EQ(p.toolChanges[1].firstPoint, 5u);
   EXPECT_EQ(p.toolChanges[1].toolNumber, 7);
-  EXPECT_EQ(p.toolChanges[1].cutter, (ClCutter{3, 1, 0.5, 1, 0, 0, 0}));
+  EXPECT_EQ(p.toolChanges[1].cutter, (planning::ClCutter{3, 1, 0.5, 1, 0, 0, 0}));
   EXPECT_TRUE(read("LOADTL/3\nGOTO/0,0,0\nGOTO/1,0,0\n").toolChanges.empty());
 }
 
 TEST(AptReader, RecordsToolData) {
-  const ClProgram a =
+  const planning::ClProgram a =
       read("LOADTL/8\nCUTTER/10,2,3,2,0,0,40\nSPINDL/2000,CLW\nCOOLNT/FLOOD\nGOTO/0,0,0\n");
   EXPECT_EQ(a.toolNumber, 8);
-  EXPECT_EQ(a.cutter, (ClCutter{10, 2, 3, 2, 0, 0, 40}));
+  EXPECT_EQ(a.cutter, (planning::ClCutter{10, 2, 3, 2, 0, 0, 40}));
   EXPECT_DOUBLE_EQ(a.spindleRpm, 2000.0);
   EXPECT_TRUE(a.coolant);
-  const ClProgram b =
+  const planning::ClProgram b =
       read("UNITS/INCHES\nTLDATA/MILL,1.0000,0.5000,3.0000,0.0000,0.0000\nGOTO/0,0,0\n");
   ASSERT_TRUE(b.cutter.has_value());
   EXPECT_DOUBLE_EQ(b.cutter->diameterMm, 25.4);
   EXPECT_DOUBLE_EQ(b.cutter->cornerRadiusMm, 12.7);
   EXPECT_DOUBLE_EQ(b.cutter->eMm, 0.0);
   EXPECT_DOUBLE_EQ(b.cutter->heightMm, 76.2);
-  EXPECT_EQ(read("CUTTER/6\nGOTO/0,0,0\n").cutter, (ClCutter{6, 0, 3, 0, 0, 0, 0}));
+  EXPECT_EQ(read("CUTTER/6\nGOTO/0,0,0\n").cutter, (planning::ClCutter{6, 0, 3, 0, 0, 0, 0}));
 }
 
 TEST(AptReader, KeepsUnknownWordsAsCommentsWithOneWarningEach) {
-  const ClProgram p = read(
+  const planning::ClProgram p = read(
       "TOOL PATH/NORM_PART,TOOL,BALL_MILL_1.00\n"
       "PAINT/COLOR,4\nPAINT/COLOR,5\nMACHIN / MILL, M0001\nLOAD/TOOL,1\n"
       "MSYS/3,3,0,1,0,0,0,1,0\nGOTO/1,2,3\nEND-OF-PATH\nEND\nFINI\nGOTO/9,9,9\n");
@@ -208,7 +208,8 @@ TEST(AptReader, KeepsUnknownWordsAsCommentsWithOneWarningEach) {
   EXPECT_THAT(p.comments, ::testing::Contains("PAINT/COLOR,5"));
   EXPECT_THAT(p.comments, ::testing::Contains("MACHIN / MILL, M0001"));
   int paint = 0;
-  for (const ClMessage& m : p.warnings) paint += m.text.find("'PAINT'") != std::string::npos;
+  for (const planning::ClMessage& m : p.warnings)
+    paint += m.text.find("'PAINT'") != std::string::npos;
   EXPECT_EQ(paint, 1);
   EXPECT_TRUE(hasWarning(p, "'TOOL PATH'"));
   EXPECT_TRUE(hasWarning(p, "'MACHIN'"));
@@ -248,8 +249,8 @@ TEST(AptReader, NeverCrashesOnRandomInput) {
     for (int k = 0; k < length; ++k) text += alphabet[rng() % alphabet.size()];
     if (trial % 2 == 0) text = "GOTO/1,0,0\nCIRCLE/0,0,0,0,0,1,1\n" + text;
     try {
-      const ClProgram p = read(text);
-      for (const ClPoint& q : p.points) ASSERT_TRUE(q.positionMm.allFinite());
+      const planning::ClProgram p = read(text);
+      for (const planning::ClPoint& q : p.points) ASSERT_TRUE(q.positionMm.allFinite());
     } catch (const IoError& e) {
       EXPECT_THAT(e.what(), ::testing::AnyOf(HasSubstr("snippet.apt: line "),
                                              HasSubstr("snippet.apt: no GOTO or FROM record")));
@@ -267,7 +268,7 @@ TEST(AptReader, InterpolatesCircleArcsOnTheCircleWithinTheChordTolerance) {
   const ddf::Vec3 centre(10, 20, 5);
   const double r = 7.5;
   for (const double tolerance : {0.1, 0.005, 0.0001}) {
-    const ClProgram p = read(
+    const planning::ClProgram p = read(
         "FEDRAT/MMPM,250\nGOTO/10,27.5,5\nCIRCLE/10,20,5,0,0,1,7.5,0.06,0.5,30,0\nGOTO/17.5,20,5\n",
         {.chordToleranceMm = tolerance});
     ASSERT_GT(p.points.size(), 3u);
@@ -300,14 +301,14 @@ TEST(AptReader, InterpolatesCircleArcsOnTheCircleWithinTheChordTolerance) {
 
 TEST(AptReader, TurnsCounterclockwiseForANegativeAxisAndMakesFullCircles) {
   // Axis -z: counter-clockwise seen from +z, from angle 180 to 270 deg (a quarter).
-  const ClProgram p = read(
+  const planning::ClProgram p = read(
       "GOTO/-272.5,172.5,100\nCIRCLE/-265,172.5,100,0,0,-1,7.5\n"
       "GOTO/-265,165,100\n");
-  for (const ClPoint& q : p.points) {
+  for (const planning::ClPoint& q : p.points) {
     EXPECT_LE(q.positionMm.x(), -265.0 + 1e-9);
     EXPECT_LE(q.positionMm.y(), 172.5 + 1e-9);
   }
-  const ClProgram full =
+  const planning::ClProgram full =
       read("GOTO/1,0,0\nCIRCLE/0,0,0,0,0,1,1\nGOTO/1,0,0\n", {.chordToleranceMm = 0.01});
   double turned = 0.0;
   for (std::size_t k = 1; k < full.points.size(); ++k) {
@@ -321,8 +322,9 @@ TEST(AptReader, TurnsCounterclockwiseForANegativeAxisAndMakesFullCircles) {
 }
 
 TEST(AptReader, InterpolatesHelicalArcsAndInchCircles) {
-  const ClProgram p = read("UNITS/INCHES\nGOTO/1,0,0\nCIRCLE/0,0,0,0,0,-1,1\nGOTO/-1,0,1\n",
-                           {.chordToleranceMm = 0.001});
+  const planning::ClProgram p =
+      read("UNITS/INCHES\nGOTO/1,0,0\nCIRCLE/0,0,0,0,0,-1,1\nGOTO/-1,0,1\n",
+           {.chordToleranceMm = 0.001});
   ASSERT_GT(p.points.size(), 10u);
   for (std::size_t k = 1; k + 1 < p.points.size(); ++k) {
     const ddf::Vec3& q = p.points[k].positionMm;

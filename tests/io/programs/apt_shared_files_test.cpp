@@ -72,18 +72,18 @@ RawScan scan(const fs::path& file) {
   return raw;
 }
 
-bool warns(const ClProgram& p, const std::string& word) {
-  return std::any_of(p.warnings.begin(), p.warnings.end(), [&](const ClMessage& m) {
+bool warns(const planning::ClProgram& p, const std::string& word) {
+  return std::any_of(p.warnings.begin(), p.warnings.end(), [&](const planning::ClMessage& m) {
     return m.text.find("'" + word + "'") != std::string::npos;
   });
 }
 
-void expectMatchesRawScan(const ClProgram& p, const RawScan& raw, double per) {
+void expectMatchesRawScan(const planning::ClProgram& p, const RawScan& raw, double per) {
   int gotoPoints = 0;
   int withAxis = 0;
   ddf::Vec3 lo = ddf::Vec3::Constant(1e300);
   ddf::Vec3 hi = ddf::Vec3::Constant(-1e300);
-  for (const ClPoint& q : p.points) {
+  for (const planning::ClPoint& q : p.points) {
     const auto it = raw.gotos.find(q.sourceLine);
     if (it == raw.gotos.end()) continue;
     ++gotoPoints;
@@ -103,7 +103,7 @@ void expectMatchesRawScan(const ClProgram& p, const RawScan& raw, double per) {
 
 /// Every interpolated CIRCLE point lies at the radius from the centre line, each arc is the
 /// short way round (these NX arcs are corner fillets and lead moves), and ends at its GOTO.
-void expectArcsOnTheirCircles(const ClProgram& p, const RawScan& raw, double per) {
+void expectArcsOnTheirCircles(const planning::ClProgram& p, const RawScan& raw, double per) {
   std::map<int, int> arcPoints;
   for (std::size_t k = 0; k < p.points.size(); ++k) {
     const auto it = raw.circles.find(p.points[k].sourceLine);
@@ -133,7 +133,7 @@ TEST(AptSharedFiles, ReadsTheNxVariableAxisFileInInches) {
   ASSERT_EQ(raw.gotos.size(), 348u);
   ASSERT_EQ(raw.sixValue, 329);  // shared/data/README.md
   ASSERT_EQ(raw.withAxis, 348);  // the first GOTO gives one: every later GOTO keeps an axis
-  const ClProgram p = readApt(file);
+  const planning::ClProgram p = readApt(file);
   EXPECT_EQ(p.sourceUnit, LengthUnit::Inch);
   EXPECT_EQ(p.points.size(), 348u);
   expectMatchesRawScan(p, raw, 25.4);
@@ -151,7 +151,7 @@ TEST(AptSharedFiles, ReadsTheNxVariableAxisFileInInches) {
   EXPECT_EQ(p.toolName, "BALL_MILL_1.00");
   EXPECT_TRUE(warns(p, "PAINT"));
   EXPECT_TRUE(warns(p, "TOOL PATH"));
-  EXPECT_TRUE(std::any_of(p.warnings.begin(), p.warnings.end(), [](const ClMessage& m) {
+  EXPECT_TRUE(std::any_of(p.warnings.begin(), p.warnings.end(), [](const planning::ClMessage& m) {
     return m.text.find("MSYS") != std::string::npos;
   }));
 }
@@ -164,7 +164,7 @@ TEST(AptSharedFiles, ReadsTheNxFilesWithCircles) {
     const fs::path file = kPaths / "mech491-nx-clsf" / name;
     const RawScan raw = scan(file);
     ASSERT_FALSE(raw.circles.empty());
-    const ClProgram p = readApt(file);
+    const planning::ClProgram p = readApt(file);
     EXPECT_EQ(p.sourceUnit, LengthUnit::Millimetre);
     EXPECT_GT(p.points.size(), raw.gotos.size());
     expectMatchesRawScan(p, raw, 1.0);
@@ -183,7 +183,7 @@ TEST(AptSharedFiles, ReadsTheNxFilesWithCircles) {
 TEST(AptSharedFiles, ReadsTheProEClFileInInches) {
   const fs::path file = kPaths / "nist-proe-clfile" / "traj1.ncl";
   const RawScan raw = scan(file);
-  const ClProgram p = readApt(file);
+  const planning::ClProgram p = readApt(file);
   EXPECT_EQ(p.partName, "CORE_WORK");
   EXPECT_EQ(p.sourceUnit, LengthUnit::Inch);
   EXPECT_EQ(p.toolNumber, 8);

@@ -3,6 +3,7 @@
 #include <ddfcam/error.h>
 #include <ddfcam/io/programs/apt_reader.h>
 #include <ddfcam/io/programs/apt_writer.h>
+#include <ddfcam/planning/placement/cutter_tool.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -30,9 +31,9 @@ std::vector<std::string> linesOf(const std::string& text) {
   return lines;
 }
 
-ClPoint point(const ddf::Vec3& p, MoveKind move, double feed,
-              std::optional<ddf::Vec3> axis = std::nullopt) {
-  ClPoint c;
+planning::ClPoint point(const ddf::Vec3& p, MoveKind move, double feed,
+                        std::optional<ddf::Vec3> axis = std::nullopt) {
+  planning::ClPoint c;
   c.positionMm = p;
   c.move = move;
   c.feedMmPerMin = feed;
@@ -40,11 +41,11 @@ ClPoint point(const ddf::Vec3& p, MoveKind move, double feed,
   return c;
 }
 
-ClProgram tinyProgram() {
-  ClProgram program;
+planning::ClProgram tinyProgram() {
+  planning::ClProgram program;
   program.partName = "DEMO";
   program.toolNumber = 3;
-  program.cutter = ClCutter{10.0, 5.0, 0.0, 5.0, 0.0, 0.0, 20.0};
+  program.cutter = planning::ClCutter{10.0, 5.0, 0.0, 5.0, 0.0, 0.0, 20.0};
   program.spindleRpm = 12000.0;
   program.coolant = true;
   program.comments = {"hello"};
@@ -83,7 +84,7 @@ TEST(AptWriter, WritesTheExpectedTextForATinyProgram) {
 }
 
 TEST(AptWriter, WritesInchesAndTheNxFeedOrder) {
-  ClProgram program;
+  planning::ClProgram program;
   program.partName = "P";
   program.spindleRpm = 0.0;
   program.spindleClockwise = false;
@@ -101,20 +102,20 @@ TEST(AptWriter, WritesInchesAndTheNxFeedOrder) {
 }
 
 TEST(AptWriter, RefusesWhatAptCannotSay) {
-  ClProgram contact = tinyProgram();
-  contact.pointKind = ClPointKind::Contact;
+  planning::ClProgram contact = tinyProgram();
+  contact.pointKind = planning::ClPointKind::Contact;
   EXPECT_THROW(encodeApt(contact), InvalidInput);
   EXPECT_THROW(encodeApt(tinyProgram(), {.coordinateDecimals = 3}), InvalidInput);
   EXPECT_THROW(encodeApt(tinyProgram(), {.coordinateDecimals = 7}), InvalidInput);
   EXPECT_THROW(encodeApt(tinyProgram(), {.vectorDecimals = 5}), InvalidInput);
   EXPECT_THROW(encodeApt(tinyProgram(), {.vectorDecimals = 10}), InvalidInput);
   EXPECT_THROW(encodeApt(tinyProgram(), {.unit = LengthUnit::Metre}), InvalidInput);
-  ClProgram badAxis = tinyProgram();
+  planning::ClProgram badAxis = tinyProgram();
   badAxis.points[1].axis = ddf::Vec3(0, 0, 2);
   EXPECT_THROW(encodeApt(badAxis), InvalidInput);
   badAxis.points[1].axis = ddf::Vec3(0, 0, std::nan(""));
   EXPECT_THROW(encodeApt(badAxis), InvalidInput);
-  ClProgram badPoint = tinyProgram();
+  planning::ClProgram badPoint = tinyProgram();
   badPoint.points[0].positionMm.x() = INFINITY;
   EXPECT_THROW(encodeApt(badPoint), InvalidInput);
 }
@@ -123,20 +124,27 @@ TEST(AptWriter, GivesTheSevenParameterCutterOfEveryToolKind) {
   using planning::Tool;
   using planning::ToolKind;
   const auto cutterOf = [](ToolKind kind, double edge) {
-    return aptCutter(Tool{.kind = kind, .radiusMm = 4.0, .widthMm = 12.0, .edgeRadiusMm = edge});
+    return planning::aptCutter(
+        Tool{.kind = kind, .radiusMm = 4.0, .widthMm = 12.0, .edgeRadiusMm = edge});
   };
-  EXPECT_EQ(cutterOf(ToolKind::BallEnd, 0.0), (ClCutter{8.0, 4.0, 0.0, 4.0, 0.0, 0.0, 12.0}));
-  EXPECT_EQ(cutterOf(ToolKind::FlatEnd, 0.0), (ClCutter{8.0, 0.0, 4.0, 0.0, 0.0, 0.0, 12.0}));
-  EXPECT_EQ(cutterOf(ToolKind::TorusCutter, 1.0), (ClCutter{8.0, 1.0, 3.0, 1.0, 0.0, 0.0, 12.0}));
-  EXPECT_EQ(cutterOf(ToolKind::Sphere, 0.0), (ClCutter{8.0, 4.0, 0.0, 4.0, 0.0, 0.0, 8.0}));
-  EXPECT_EQ(cutterOf(ToolKind::CylinderRoll, 0.5), (ClCutter{8.0, 0.5, 3.5, 0.5, 0.0, 0.0, 12.0}));
+  EXPECT_EQ(cutterOf(ToolKind::BallEnd, 0.0),
+            (planning::ClCutter{8.0, 4.0, 0.0, 4.0, 0.0, 0.0, 12.0}));
+  EXPECT_EQ(cutterOf(ToolKind::FlatEnd, 0.0),
+            (planning::ClCutter{8.0, 0.0, 4.0, 0.0, 0.0, 0.0, 12.0}));
+  EXPECT_EQ(cutterOf(ToolKind::TorusCutter, 1.0),
+            (planning::ClCutter{8.0, 1.0, 3.0, 1.0, 0.0, 0.0, 12.0}));
+  EXPECT_EQ(cutterOf(ToolKind::Sphere, 0.0),
+            (planning::ClCutter{8.0, 4.0, 0.0, 4.0, 0.0, 0.0, 8.0}));
+  EXPECT_EQ(cutterOf(ToolKind::CylinderRoll, 0.5),
+            (planning::ClCutter{8.0, 0.5, 3.5, 0.5, 0.0, 0.0, 12.0}));
   EXPECT_EQ(cutterOf(ToolKind::BeltContactWheel, 0.0),
-            (ClCutter{8.0, 0.0, 4.0, 0.0, 0.0, 0.0, 12.0}));
-  EXPECT_THROW(aptCutter(Tool{.kind = ToolKind::BallEnd, .radiusMm = -1.0}), InvalidInput);
+            (planning::ClCutter{8.0, 0.0, 4.0, 0.0, 0.0, 0.0, 12.0}));
+  EXPECT_THROW(planning::aptCutter(Tool{.kind = ToolKind::BallEnd, .radiusMm = -1.0}),
+               InvalidInput);
 }
 
 TEST(AptWriter, BreaksLongRecordsAfterACommaWithinTheColumnLimit) {
-  ClProgram program;
+  planning::ClProgram program;
   program.partName = std::string(200, 'N');
   program.comments = {std::string(150, 'c') + "\nsecond line"};
   program.points = {point({-99999.123456, 88888.5, -77777.25}, MoveKind::Cut, 1e5,
@@ -153,21 +161,21 @@ TEST(AptWriter, BreaksLongRecordsAfterACommaWithinTheColumnLimit) {
       }
     }
     EXPECT_GT(continued, 0) << columns;
-    const ClProgram back = decodeApt(text, "long.apt");
+    const planning::ClProgram back = decodeApt(text, "long.apt");
     ASSERT_EQ(back.points.size(), 1u);
     EXPECT_NEAR((back.points[0].positionMm - program.points[0].positionMm).norm(), 0.0, 1e-6);
   }
 }
 
 /// Random programs: paths of rapid approaches and cut runs, 3- or 5-axis or mixed.
-ClProgram randomProgram(std::mt19937& rng, bool fiveAxis, bool mixed) {
+planning::ClProgram randomProgram(std::mt19937& rng, bool fiveAxis, bool mixed) {
   std::uniform_real_distribution<double> coord(-500.0, 500.0);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::uniform_int_distribution<int> count(1, 6);
-  ClProgram program;
+  planning::ClProgram program;
   program.partName = "RANDOM_" + std::to_string(rng() % 1000);
   program.toolNumber = static_cast<int>(rng() % 40);
-  program.cutter = ClCutter{6.0, 3.0, 0.0, 3.0, 0.0, 0.0, 25.0};
+  program.cutter = planning::ClCutter{6.0, 3.0, 0.0, 3.0, 0.0, 0.0, 25.0};
   program.spindleRpm = 1000.0 + rng() % 20000;
   program.spindleClockwise = rng() % 2 == 0;
   program.coolant = rng() % 2 == 0;
@@ -179,8 +187,8 @@ ClProgram randomProgram(std::mt19937& rng, bool fiveAxis, bool mixed) {
     const int cuts = count(rng) + 1;
     for (int k = 0; k < rapids + cuts; ++k) {
       const bool rapid = k < rapids;
-      ClPoint c = point({coord(rng), coord(rng), coord(rng)},
-                        rapid ? MoveKind::Rapid : MoveKind::Cut, rapid ? 0.0 : feed);
+      planning::ClPoint c = point({coord(rng), coord(rng), coord(rng)},
+                                  rapid ? MoveKind::Rapid : MoveKind::Cut, rapid ? 0.0 : feed);
       if (fiveAxis && (!mixed || rng() % 2 == 0)) {
         ddf::Vec3 a(unit(rng), unit(rng), unit(rng));
         if (a.norm() < 0.1) a = ddf::Vec3::UnitZ();
@@ -193,7 +201,8 @@ ClProgram randomProgram(std::mt19937& rng, bool fiveAxis, bool mixed) {
   return program;
 }
 
-void expectSameToPrecision(const ClProgram& in, const ClProgram& out, const AptWriteParams& w) {
+void expectSameToPrecision(const planning::ClProgram& in, const planning::ClProgram& out,
+                           const AptWriteParams& w) {
   const std::vector<std::optional<ddf::Vec3>> axes = test::axesInForce(in);
   const double per = millimetresPer(w.unit);
   const double posTol = 0.5 * std::pow(10.0, -w.coordinateDecimals) * per * (1 + 1e-9) + 1e-9;
@@ -211,8 +220,8 @@ void expectSameToPrecision(const ClProgram& in, const ClProgram& out, const AptW
   EXPECT_NEAR(out.cutter->heightMm, in.cutter->heightMm, posTol);
   ASSERT_EQ(out.points.size(), in.points.size());
   for (std::size_t k = 0; k < in.points.size(); ++k) {
-    const ClPoint& a = in.points[k];
-    const ClPoint& b = out.points[k];
+    const planning::ClPoint& a = in.points[k];
+    const planning::ClPoint& b = out.points[k];
     for (int d = 0; d < 3; ++d) EXPECT_NEAR(b.positionMm[d], a.positionMm[d], posTol) << k;
     EXPECT_EQ(b.move, a.move) << k;
     EXPECT_NEAR(b.feedMmPerMin, a.feedMmPerMin, posTol) << k;
@@ -239,7 +248,7 @@ TEST(AptWriter, RoundTripsRandomProgramsToTheWrittenPrecision) {
           const bool fiveAxis = trial % 3 != 0;
           const bool mixed = trial % 3 == 2;
           ++trial;
-          const ClProgram in = randomProgram(rng, fiveAxis, mixed);
+          const planning::ClProgram in = randomProgram(rng, fiveAxis, mixed);
           const AptWriteParams w{.coordinateDecimals = cd,
                                  .vectorDecimals = vd,
                                  .unit = unit,
@@ -258,7 +267,7 @@ TEST(AptWriter, WritesAtomicallyToAFileThatReadsBack) {
   test::ScratchDir dir;
   const auto path = dir.path() / "tiny.apt";
   writeApt(tinyProgram(), path);
-  const ClProgram back = readApt(path);
+  const planning::ClProgram back = readApt(path);
   EXPECT_EQ(back.partName, "DEMO");
   ASSERT_EQ(back.points.size(), 4u);
   EXPECT_EQ(back.points[3].move, MoveKind::Cut);  // APT has no link moves: a feed move

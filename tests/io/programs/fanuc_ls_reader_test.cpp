@@ -59,11 +59,11 @@ TEST(FanucLsReader, ReadsMotionsFeedsAndToolAxes) {
       "   7:  CALL FOO ;\n"
       "   8:J P[1] 50% CNT100    ;\n"
       "   9:L P[2:\"second\"] 2000mm/sec FINE    ;\n";
-  const ClProgram p = decodeFanucLs("\xEF\xBB\xBF" + program(main, fourPoints()), "p.ls");
+  const planning::ClProgram p = decodeFanucLs("\xEF\xBB\xBF" + program(main, fourPoints()), "p.ls");
   EXPECT_EQ(p.partName, "TEST_PATH");
   EXPECT_EQ(p.toolNumber, 3);
   EXPECT_EQ(p.sourceUnit, LengthUnit::Millimetre);
-  EXPECT_EQ(p.pointKind, ClPointKind::ToolReference);
+  EXPECT_EQ(p.pointKind, planning::ClPointKind::ToolReference);
   ASSERT_EQ(p.points.size(), 6u);
   const MoveKind moves[] = {MoveKind::Rapid, MoveKind::Cut,   MoveKind::Cut,
                             MoveKind::Cut,   MoveKind::Rapid, MoveKind::Cut};
@@ -98,13 +98,14 @@ TEST(FanucLsReader, ApproximatesCircularMotionAndWarnsAboutMissingFeeds) {
       "    :  P[3] 100mm/sec FINE    ;\n"
       "   3:L P[4] 30deg/sec FINE Offset,PR[1]   ;\n"
       "   4:L PR[5] 100mm/sec FINE    ;\n";
-  const ClProgram p = decodeFanucLs(program(main, fourPoints()), "p.ls");
+  const planning::ClProgram p = decodeFanucLs(program(main, fourPoints()), "p.ls");
   ASSERT_EQ(p.points.size(), 4u);
   EXPECT_TRUE(p.points[2].positionMm.isApprox(ddf::Vec3(7, 8, 9), 1e-12));
   EXPECT_DOUBLE_EQ(p.points[2].feedMmPerMin, 6000.0);
   EXPECT_EQ(p.points[3].feedMmPerMin, 0.0);
   std::string all;
-  for (const ClMessage& m : p.warnings) all += std::to_string(m.line) + ":" + m.text + "\n";
+  for (const planning::ClMessage& m : p.warnings)
+    all += std::to_string(m.line) + ":" + m.text + "\n";
   EXPECT_THAT(all, HasSubstr("7:circular motion approximated"));
   EXPECT_THAT(all, HasSubstr("9:speed '30deg/sec' gives no linear feed"));
   EXPECT_THAT(all, HasSubstr("9:motion option 'Offset,PR[1]' ignored"));
@@ -150,7 +151,7 @@ TEST(FanucLsReader, WarnsAboutUserFramesAndAMissingEnd) {
   std::string text =
       program("   1:L P[1] 100mm/sec FINE ;\n", position(1, xyz(1, 2, 3), wpr(0, 0, 0), 2));
   text.resize(text.size() - 5);  // drop "/END\n"
-  const ClProgram p = decodeFanucLs(text, "p.ls");
+  const planning::ClProgram p = decodeFanucLs(text, "p.ls");
   ASSERT_EQ(p.warnings.size(), 2u);
   EXPECT_THAT(p.warnings[0].text, HasSubstr("no /END"));
   EXPECT_THAT(p.warnings[1].text, HasSubstr("user frame 2"));
@@ -161,7 +162,7 @@ TEST(FanucLsReader, EveryTruncationOfAValidFileReadsOrFailsCleanly) {
       program("   1:J P[1] 100% FINE ;\n   2:L P[2] 100mm/sec FINE ;\n", fourPoints());
   for (std::size_t n = 0; n <= text.size(); ++n) {
     try {
-      const ClProgram p = decodeFanucLs(text.substr(0, n), "p.ls");
+      const planning::ClProgram p = decodeFanucLs(text.substr(0, n), "p.ls");
       EXPECT_EQ(p.points.size(), 2u);
     } catch (const IoError&) {
     }

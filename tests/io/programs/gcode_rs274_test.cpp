@@ -73,17 +73,18 @@ void expectSameMoves(const std::vector<Axes>& canonical, const std::vector<Axes>
   }
 }
 
-ClProgram sphereProgram(int count, bool withAxes) {
-  ClProgram program;
+planning::ClProgram sphereProgram(int count, bool withAxes) {
+  planning::ClProgram program;
   program.partName = "rs274 check (sphere)";
-  program.pointKind = withAxes ? ClPointKind::ToolReference : ClPointKind::Contact;
+  program.pointKind =
+      withAxes ? planning::ClPointKind::ToolReference : planning::ClPointKind::Contact;
   program.coolant = true;
   for (int i = 0; i < count; ++i) {
     const double s = static_cast<double>(i) / (count - 1);
     const double tilt = (withAxes ? 100.0 : 75.0) * kPi / 180.0 * s;
     const ddf::Vec3 n(std::sin(tilt) * std::cos(8 * kPi * s),
                       std::sin(tilt) * std::sin(8 * kPi * s), std::cos(tilt));
-    ClPoint p;
+    planning::ClPoint p;
     p.point = i;
     p.positionMm = ddf::Vec3(4.0, -7.0, -25.0) + 30.0 * n;
     p.normal = n;
@@ -106,7 +107,7 @@ const planning::Tool kBall{
 
 TEST(GCodeRs274, ThreeAxisProgramIsAcceptedAndMovesAsWritten) {
   DDFCAM_REQUIRE_RS274();
-  const ClProgram program = sphereProgram(300, false);
+  const planning::ClProgram program = sphereProgram(300, false);
   const std::string text = encodeGCode(program, kBall, {});
   const Rs274Run run = runRs274(text);
   EXPECT_EQ(run.exitCode, 0);

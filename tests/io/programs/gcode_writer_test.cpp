@@ -76,12 +76,12 @@ ddf::Vec3 unitFromAngles(double tiltRad, double azimuthRad) {
 
 /// Contact points on the upper part of a sphere (centre @p centre, radius @p radius), normals
 /// outwards, as a one-path program.
-ClProgram sphereContacts(const ddf::Vec3& centre, double radius, int count) {
-  ClProgram program;
-  program.pointKind = ClPointKind::Contact;
+planning::ClProgram sphereContacts(const ddf::Vec3& centre, double radius, int count) {
+  planning::ClProgram program;
+  program.pointKind = planning::ClPointKind::Contact;
   for (int i = 0; i < count; ++i) {
     const ddf::Vec3 n = unitFromAngles(1.3 * i / count, 0.37 * i);
-    ClPoint p;
+    planning::ClPoint p;
     p.point = i;
     p.positionMm = centre + radius * n;
     p.normal = n;
@@ -113,7 +113,7 @@ std::vector<Motion> pointMotions(const std::string& text, std::size_t count) {
 TEST(GCodeWriter, ThreeAxisBallTipIsSphereOffsetMinusRadius) {
   const ddf::Vec3 centre(10.0, -5.0, -20.0);
   const double sphere = 30.0, ball = 3.0;
-  const ClProgram program = sphereContacts(centre, sphere, 200);
+  const planning::ClProgram program = sphereContacts(centre, sphere, 200);
   const std::string text = encodeGCode(program, cutter(planning::ToolKind::BallEnd, ball), {});
   const std::vector<Motion> motions = pointMotions(text, 200);
   for (std::size_t i = 0; i < motions.size(); ++i) {
@@ -134,7 +134,7 @@ TEST(GCodeWriter, ThreeAxisBallTipIsSphereOffsetMinusRadius) {
 TEST(GCodeWriter, ThreeAxisFlatAndTorusTouchTheSurface) {
   const ddf::Vec3 centre(0.0, 0.0, -40.0);
   const double sphere = 40.0;
-  const ClProgram program = sphereContacts(centre, sphere, 60);
+  const planning::ClProgram program = sphereContacts(centre, sphere, 60);
   for (const planning::Tool& tool : {cutter(planning::ToolKind::FlatEnd, 5.0),
                                      cutter(planning::ToolKind::TorusCutter, 6.0, 2.0)}) {
     const std::vector<Motion> motions = pointMotions(encodeGCode(program, tool, {}), 60);
@@ -154,8 +154,8 @@ TEST(GCodeWriter, ThreeAxisFlatAndTorusTouchTheSurface) {
 }
 
 TEST(GCodeWriter, EveryMotionLineHasItsGWordAndRapidsHaveNoFeed) {
-  ClProgram program = sphereContacts({0, 0, 0}, 20.0, 30);
-  program.pointKind = ClPointKind::ToolReference;
+  planning::ClProgram program = sphereContacts({0, 0, 0}, 20.0, 30);
+  program.pointKind = planning::ClPointKind::ToolReference;
   for (int i = 10; i < 15; ++i) program.points[i].move = planning::MoveKind::Rapid;
   program.points[20].move = planning::MoveKind::Link;
   program.points[20].feedMmPerMin = 0.0;  // falls back to defaultFeedMmPerMin
@@ -178,8 +178,8 @@ TEST(GCodeWriter, EveryMotionLineHasItsGWordAndRapidsHaveNoFeed) {
 }
 
 TEST(GCodeWriter, InchProgramScalesPositionsAndFeeds) {
-  ClProgram program = sphereContacts({0, 0, 0}, 25.4, 5);
-  program.pointKind = ClPointKind::ToolReference;
+  planning::ClProgram program = sphereContacts({0, 0, 0}, 25.4, 5);
+  program.pointKind = planning::ClPointKind::ToolReference;
   GCodeWriteParams params;
   params.unit = LengthUnit::Inch;
   params.decimals = 6;
@@ -212,11 +212,11 @@ std::pair<ddf::Vec3, ddf::Vec3> partPose(const planning::TableKinematics& k, con
 
 /// Tool-reference program: a spiral of tips on a dome with axes tilting from 0 to 80 degrees
 /// while turning three times around Z.
-ClProgram spiralProgram(int count) {
-  ClProgram program;
+planning::ClProgram spiralProgram(int count) {
+  planning::ClProgram program;
   for (int i = 0; i < count; ++i) {
     const double s = static_cast<double>(i) / (count - 1);
-    ClPoint p;
+    planning::ClPoint p;
     p.point = i;
     p.axis = unitFromAngles(80.0 * kPi / 180.0 * s, 6.0 * kPi * s);
     p.positionMm = ddf::Vec3(3.0, -2.0, 15.0) + 35.0 * *p.axis;
@@ -235,7 +235,7 @@ TEST(GCodeWriter, FiveAxisLinesMapBackToTipAndAxis) {
     params.kinematics.rotaryOffsetMm = {5.0, -3.0, 0.0};
     params.decimals = 6;
     params.angleDecimals = 6;
-    const ClProgram program = spiralProgram(400);
+    const planning::ClProgram program = spiralProgram(400);
     const std::string text = encodeGCode(program, cutter(planning::ToolKind::BallEnd, 4.0), params);
     EXPECT_THAT(text, ::testing::HasSubstr(pair == planning::RotaryPair::AC ? " A" : " B"));
     const std::vector<Motion> motions = pointMotions(text, 400);
@@ -256,7 +256,7 @@ TEST(GCodeWriter, InverseTimeFeedIsFeedOverTipDistance) {
   params.inverseTimeFeed = true;
   params.decimals = 6;
   params.angleDecimals = 6;
-  const ClProgram program = spiralProgram(200);
+  const planning::ClProgram program = spiralProgram(200);
   const std::string text = encodeGCode(program, cutter(planning::ToolKind::BallEnd, 4.0), params);
   EXPECT_THAT(text, ::testing::HasSubstr(" G90 G93\n"));
   const std::vector<Motion> motions = pointMotions(text, 200);
@@ -269,8 +269,8 @@ TEST(GCodeWriter, InverseTimeFeedIsFeedOverTipDistance) {
 }
 
 TEST(GCodeWriter, FiveAxisContactBallWithAxisAlongNormalTipsAtTheContact) {
-  ClProgram program = sphereContacts({0, 0, 0}, 30.0, 50);
-  for (ClPoint& p : program.points) p.axis = p.normal;
+  planning::ClProgram program = sphereContacts({0, 0, 0}, 30.0, 50);
+  for (planning::ClPoint& p : program.points) p.axis = p.normal;
   GCodeWriteParams params;
   params.mode = Mode::FiveAxis;
   const std::string text = encodeGCode(program, cutter(planning::ToolKind::BallEnd, 3.0), params);
@@ -286,10 +286,10 @@ TEST(GCodeWriter, FiveAxisTiltedFlatAndTorusTouchAPlane) {
   // function of the cutter along -n: the tip's height minus R |n across a| (flat end), or
   // n . tip + r n . a - (R - r) |n across a| - r (torus); it must equal the plane's offset.
   const ddf::Vec3 n = unitFromAngles(0.5, 1.0);
-  ClProgram program;
-  program.pointKind = ClPointKind::Contact;
+  planning::ClProgram program;
+  program.pointKind = planning::ClPointKind::Contact;
   for (int i = 0; i < 40; ++i) {
-    ClPoint p;
+    planning::ClPoint p;
     p.point = i;
     p.positionMm = ddf::Vec3(i - 20.0, 0.5 * i, 0.0);
     p.positionMm.z() = -(n.x() * p.positionMm.x() + n.y() * p.positionMm.y()) / n.z();
@@ -318,21 +318,21 @@ TEST(GCodeWriter, FiveAxisTiltedFlatAndTorusTouchAPlane) {
 
 TEST(GCodeWriter, RefusesWhatItCannotWrite) {
   const planning::Tool ball = cutter(planning::ToolKind::BallEnd, 3.0);
-  ClProgram program = sphereContacts({0, 0, 0}, 30.0, 10);
+  planning::ClProgram program = sphereContacts({0, 0, 0}, 30.0, 10);
   program.points[4].sourceLine = 77;
-  ClProgram tilted = program;
+  planning::ClProgram tilted = program;
   tilted.points[4].axis = ddf::Vec3(0.0, std::sin(0.1), std::cos(0.1));
   EXPECT_THAT([&] { encodeGCode(tilted, ball, {}); },
               ::testing::ThrowsMessage<InvalidInput>(::testing::HasSubstr("point 4")));
   EXPECT_THAT([&] { encodeGCode(tilted, ball, {}); },
               ::testing::ThrowsMessage<InvalidInput>(::testing::HasSubstr("line 77")));
-  ClProgram noNormal = program;
+  planning::ClProgram noNormal = program;
   noNormal.points[3].normal.reset();
   EXPECT_THROW(encodeGCode(noNormal, ball, {}), InvalidInput);
-  ClProgram nan = program;
+  planning::ClProgram nan = program;
   nan.points[2].positionMm.x() = NAN;
   EXPECT_THROW(encodeGCode(nan, ball, {}), InvalidInput);
-  ClProgram infFeed = program;
+  planning::ClProgram infFeed = program;
   infFeed.points[2].feedMmPerMin = INFINITY;
   EXPECT_THROW(encodeGCode(infFeed, ball, {}), InvalidInput);
   EXPECT_THROW(encodeGCode(program, planning::Tool{}, {}), InvalidInput);  // a roll
@@ -343,18 +343,18 @@ TEST(GCodeWriter, RefusesWhatItCannotWrite) {
   limited.mode = Mode::FiveAxis;
   limited.kinematics.tiltMaxDeg = 10.0;
   limited.kinematics.tiltMinDeg = -10.0;
-  ClProgram steep = program;
-  for (ClPoint& p : steep.points) p.axis = p.normal;
+  planning::ClProgram steep = program;
+  for (planning::ClPoint& p : steep.points) p.axis = p.normal;
   EXPECT_THAT([&] { encodeGCode(steep, ball, limited); },
               ::testing::ThrowsMessage<InvalidInput>(::testing::HasSubstr("outside the machine")));
 }
 
 /// A tool reference program along x with the given axes (empty: no axis given).
-ClProgram referencePoints(const std::vector<std::optional<ddf::Vec3>>& axes) {
-  ClProgram program;
-  program.pointKind = ClPointKind::ToolReference;
+planning::ClProgram referencePoints(const std::vector<std::optional<ddf::Vec3>>& axes) {
+  planning::ClProgram program;
+  program.pointKind = planning::ClPointKind::ToolReference;
   for (std::size_t i = 0; i < axes.size(); ++i) {
-    ClPoint p;
+    planning::ClPoint p;
     p.point = static_cast<int>(i);
     p.positionMm = {10.0 * static_cast<double>(i), 5.0, 2.0};
     p.axis = axes[i];
@@ -366,7 +366,8 @@ ClProgram referencePoints(const std::vector<std::optional<ddf::Vec3>>& axes) {
 
 TEST(GCodeWriter, PointWithoutAnAxisKeepsTheAxisInForce) {
   const ddf::Vec3 tilted = unitFromAngles(0.4, 2.0);
-  const ClProgram program = referencePoints({std::nullopt, tilted, std::nullopt, std::nullopt});
+  const planning::ClProgram program =
+      referencePoints({std::nullopt, tilted, std::nullopt, std::nullopt});
   GCodeWriteParams params;
   params.mode = Mode::FiveAxis;
   params.kinematics.pair = planning::RotaryPair::BC;
@@ -389,12 +390,12 @@ TEST(GCodeWriter, AdviceForAnAxisItCannotWriteIsAdviceThatWorks) {
   GCodeWriteParams five;
   five.mode = Mode::FiveAxis;
   // Tilted by 30 deg: 3-axis says 5-axis, and 5-axis writes it.
-  const ClProgram tilted = referencePoints({unitFromAngles(kPi / 6, 0.3)});
+  const planning::ClProgram tilted = referencePoints({unitFromAngles(kPi / 6, 0.3)});
   EXPECT_THAT([&] { encodeGCode(tilted, ball, {}); },
               ::testing::ThrowsMessage<InvalidInput>(::testing::HasSubstr("5-axis machine")));
   EXPECT_NO_THROW(encodeGCode(tilted, ball, five));
   // Pointing up from below: neither machine reaches it, and neither message says 5-axis.
-  const ClProgram upward = referencePoints({ddf::Vec3(0, 0, -1)});
+  const planning::ClProgram upward = referencePoints({ddf::Vec3(0, 0, -1)});
   for (const GCodeWriteParams& params : {GCodeWriteParams{}, five}) {
     try {
       encodeGCode(upward, ball, params);
@@ -409,7 +410,8 @@ TEST(GCodeWriter, AdviceForAnAxisItCannotWriteIsAdviceThatWorks) {
 }
 
 TEST(GCodeWriter, ToolChangesGiveTheirToolAndStartTheSpindleAgain) {
-  ClProgram program = referencePoints({std::nullopt, std::nullopt, std::nullopt, std::nullopt});
+  planning::ClProgram program =
+      referencePoints({std::nullopt, std::nullopt, std::nullopt, std::nullopt});
   program.toolNumber = 1;
   program.spindleRpm = 3000.0;
   program.toolChanges = {{.firstPoint = 2, .toolNumber = 4, .toolName = "flat 6"},
@@ -439,7 +441,7 @@ TEST(GCodeWriter, ToolChangesGiveTheirToolAndStartTheSpindleAgain) {
 
 TEST(GCodeWriter, ToolCentrePointPositionsAreTheTipInThePartFrame) {
   const ddf::Vec3 tilted = unitFromAngles(0.5, 1.0);
-  const ClProgram program = referencePoints({tilted, tilted, tilted});
+  const planning::ClProgram program = referencePoints({tilted, tilted, tilted});
   GCodeWriteParams params;
   params.mode = Mode::FiveAxis;
   params.kinematics.pair = planning::RotaryPair::BC;
@@ -457,7 +459,7 @@ TEST(GCodeWriter, ToolCentrePointPositionsAreTheTipInThePartFrame) {
 }
 
 TEST(GCodeWriter, WriteGCodeWritesTheEncodedText) {
-  const ClProgram program = sphereContacts({0, 0, 0}, 30.0, 10);
+  const planning::ClProgram program = sphereContacts({0, 0, 0}, 30.0, 10);
   const planning::Tool ball = cutter(planning::ToolKind::BallEnd, 3.0);
   const std::filesystem::path path =
       std::filesystem::temp_directory_path() / "ddfcam_gcode_writer_test.ngc";

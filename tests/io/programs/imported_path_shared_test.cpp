@@ -4,8 +4,8 @@
 #include <ddfcam/ddf/pseudo_normals.h>
 #include <ddfcam/ddf/support_mesh.h>
 #include <ddfcam/io/mesh/mesh_io.h>
-#include <ddfcam/io/programs/imported_path.h>
 #include <ddfcam/planning/inspection/error_map.h>
+#include <ddfcam/planning/placement/imported_path.h>
 #include <ddfcam/planning/simulation/path_simulation.h>
 #include <ddfcam/planning/simulation/workpiece.h>
 
@@ -29,10 +29,10 @@ const std::filesystem::path kDir =
 /// The derived CSV (path_index,x,y,z,i,j,k in metres after a '#' comment line), read here
 /// with a few lines of its own so the test does not depend on the CSV reader. Numbers are
 /// kept in metres in a program that claims millimetres: placeProgram's actualUnit rescales.
-ClProgram readCrsCsv() {
+planning::ClProgram readCrsCsv() {
   std::ifstream in(kDir / "part_2_job_0_degrees.xyzijk.csv");
   EXPECT_TRUE(in.good());
-  ClProgram program;
+  planning::ClProgram program;
   std::string line;
   int lineNo = 0;
   while (std::getline(in, line)) {
@@ -40,7 +40,7 @@ ClProgram readCrsCsv() {
     if (line.empty() || line[0] == '#') continue;
     std::replace(line.begin(), line.end(), ',', ' ');
     std::istringstream fields(line);
-    ClPoint p;
+    planning::ClPoint p;
     Vec3 axis;
     fields >> p.path >> p.positionMm.x() >> p.positionMm.y() >> p.positionMm.z() >> axis.x() >>
         axis.y() >> axis.z();
@@ -76,13 +76,13 @@ planning::Tool sandingDisc() {
 
 TEST(ImportedPathShared, CrsSandingRasterLiesOnThePartAndGrindsOnlyAlongIt) {
   const ddf::DisplacementField part = crsPart();
-  const ClProgram program = readCrsCsv();
+  const planning::ClProgram program = readCrsCsv();
   ASSERT_EQ(program.points.size(), 98u);
   ASSERT_EQ(program.pathCount(), 7);
   const planning::Tool disc = sandingDisc();
-  PlaceProgramParams params;
+  planning::PlaceProgramParams params;
   params.actualUnit = LengthUnit::Metre;
-  const ImportedPath placed = placeProgram(program, disc, part, params);
+  const planning::ImportedPath placed = planning::placeProgram(program, disc, part, params);
   ASSERT_EQ(placed.path.poses.size(), 98u);
   EXPECT_EQ(placed.path.passStarts.size(), 7u);
 
@@ -104,7 +104,7 @@ TEST(ImportedPathShared, CrsSandingRasterLiesOnThePartAndGrindsOnlyAlongIt) {
             << " distance| median " << median << " mm, max on part "
             << placed.maxOnPartContactDistanceMm.value_or(-1.0) << " mm, max " << distances.back()
             << " mm; axis along the part normal at " << alongNormal << " of 98\n";
-  for (const ClMessage& w : placed.warnings)
+  for (const planning::ClMessage& w : placed.warnings)
     std::cout << "  line " << w.line << ": " << w.text << "\n";
   EXPECT_GE(98 - placed.pointsOffPart, 90);  // a raster ON the part
   EXPECT_LT(median, 2.0);
@@ -170,9 +170,9 @@ TEST(ImportedPathShared, CrsToolZAxisPointsOutOfThePartAndAutoReadsItAsToolAxis)
     normals.push_back((b - a).cross(c - a).normalized());
   }
   EXPECT_GT(volume, 0.0);
-  const ClProgram program = readCrsCsv();
+  const planning::ClProgram program = readCrsCsv();
   int outwards = 0;
-  for (const ClPoint& p : program.points) {
+  for (const planning::ClPoint& p : program.points) {
     const Vec3 q = 1000.0 * p.positionMm;
     std::size_t nearest = 0;
     for (std::size_t f = 1; f < centroids.size(); ++f)
@@ -183,42 +183,43 @@ TEST(ImportedPathShared, CrsToolZAxisPointsOutOfThePartAndAutoReadsItAsToolAxis)
 
   const ddf::DisplacementField part = crsPart();
   const planning::Tool disc = sandingDisc();
-  PlaceProgramParams params;
+  planning::PlaceProgramParams params;
   params.actualUnit = LengthUnit::Metre;
-  params.vectorMeaning = PathVectorMeaning::Auto;
-  params.pointMeaning = PathPointMeaning::Auto;
-  const ImportedPath detected = placeProgram(program, disc, part, params);
-  const PathConvention& c = detected.convention;
+  params.vectorMeaning = planning::PathVectorMeaning::Auto;
+  params.pointMeaning = planning::PathPointMeaning::Auto;
+  const planning::ImportedPath detected = planning::placeProgram(program, disc, part, params);
+  const planning::PathConvention& c = detected.convention;
   std::cout << "CRS part_2 auto: " << c.reason << "\n  " << detected.pointsOffPart
             << " of 98 off the part, max |contact distance| " << detected.maxAbsContactDistanceMm
             << " mm, on the part " << detected.maxOnPartContactDistanceMm.value_or(-1.0) << " mm, "
             << detected.gougingPoses << " gouging (deepest " << detected.maxGougeDepthMm
             << " mm)\n";
-  EXPECT_EQ(c.vectors, PathVectorMeaning::ToolAxis);
+  EXPECT_EQ(c.vectors, planning::PathVectorMeaning::ToolAxis);
   EXPECT_TRUE(c.vectorsDetected);
   EXPECT_EQ(c.sampled, 98);
   EXPECT_GE(c.vectorsOut, 95);
   EXPECT_EQ(c.vectorsIn, 0);
   // A disc's tip touches: contacts and tips look alike, the CSV's tool points are kept.
-  EXPECT_EQ(c.points, ClPointKind::ToolReference);
+  EXPECT_EQ(c.points, planning::ClPointKind::ToolReference);
   EXPECT_LT(std::abs(c.medianPointDistanceMm), 0.5);
   // Auto gives what the explicit tool-axis reading gives.
-  const ImportedPath axes = placeProgram(program, disc, part, {.actualUnit = LengthUnit::Metre});
+  const planning::ImportedPath axes =
+      planning::placeProgram(program, disc, part, {.actualUnit = LengthUnit::Metre});
   ASSERT_EQ(axes.path.poses.size(), detected.path.poses.size());
   for (std::size_t i = 0; i < axes.path.poses.size(); ++i)
     EXPECT_TRUE(axes.path.poses[i].pose.isApprox(detected.path.poses[i].pose, 1e-12)) << i;
   // Read as approach directions the disc stands upside down in the part: every pose gouges.
-  PlaceProgramParams approach = params;
-  approach.vectorMeaning = PathVectorMeaning::ApproachDirection;
-  const ImportedPath wrong = placeProgram(program, disc, part, approach);
+  planning::PlaceProgramParams approach = params;
+  approach.vectorMeaning = planning::PathVectorMeaning::ApproachDirection;
+  const planning::ImportedPath wrong = planning::placeProgram(program, disc, part, approach);
   std::cout << "CRS part_2 as approach: " << wrong.gougingPoses << " gouging, max |contact "
             << "distance| " << wrong.maxAbsContactDistanceMm << " mm\n";
   EXPECT_EQ(wrong.gougingPoses, 98);
   // For the record: the disc tilted by the file's axes digs its rim in where the axis leaves
   // the part's normal; read as contacts, the rim touches at the point instead.
-  PlaceProgramParams contact = params;
-  contact.pointMeaning = PathPointMeaning::Contact;
-  const ImportedPath touching = placeProgram(program, disc, part, contact);
+  planning::PlaceProgramParams contact = params;
+  contact.pointMeaning = planning::PathPointMeaning::Contact;
+  const planning::ImportedPath touching = planning::placeProgram(program, disc, part, contact);
   std::cout << "CRS part_2 as contacts: " << touching.gougingPoses << " gouging (deepest "
             << touching.maxGougeDepthMm << " mm), max |contact distance| "
             << touching.maxAbsContactDistanceMm << " mm\n";

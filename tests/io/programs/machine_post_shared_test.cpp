@@ -2,9 +2,9 @@
 // ddfcam: 5-axis G-code of NX's variable-axis CLSF against NX's own Haas UMC-750 post of the
 // same file (shared/data/paths/mech491-nx-clsf), and the tool axis of every written move
 // against the axis in force in the APT text, read here by a scan of its own.
-#include <ddfcam/io/programs/cutter_tool.h>
 #include <ddfcam/io/programs/machine_file.h>
 #include <ddfcam/io/programs/path_file.h>
+#include <ddfcam/planning/placement/cutter_tool.h>
 #include <ddfcam/planning/placement/machine_kinematics.h>
 
 #include <gtest/gtest.h>
@@ -78,14 +78,14 @@ ddf::Vec3 haasAxis(double bDeg, double cDeg) {
 /// Our G-code of the CLSF for @p params, as programmed moves without the two safe-plane
 /// rapids at the start and the retract at the end.
 std::vector<std::map<char, double>> ourMoves(const GCodeWriteParams& params) {
-  const ClProgram program = readPathFile(kDir / "APT_Variable_Axis.txt");
+  const planning::ClProgram program = readPathFile(kDir / "APT_Variable_Axis.txt").program;
   PathWriteParams write;
   write.format = PathFormat::GCode;
   write.gcode = params;
   write.gcode.unit = LengthUnit::Inch;
   write.gcode.angleDecimals = 4;
   const fs::path out = fs::temp_directory_path() / "ddfcam_machine_post_shared.ngc";
-  writePathFile(program, toolFromCutter(*program.cutter, program.toolName), out, write);
+  writePathFile(program, planning::toolFromCutter(*program.cutter, program.toolName), out, write);
   std::vector<std::map<char, double>> moves = programmedMoves(test::readBytes(out));
   fs::remove(out);
   EXPECT_EQ(moves.size(), program.points.size() + 3);

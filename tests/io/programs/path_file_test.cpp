@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 
 #include "../io_test_support.h"
 
@@ -15,6 +16,7 @@ namespace {
 
 using planning::MoveKind;
 using test::ioErrorMessage;
+using test::readBytes;
 using test::ScratchDir;
 using test::writeBytes;
 using ::testing::HasSubstr;
@@ -75,13 +77,20 @@ TEST(PathFile, ReadsEachFormatAndRejectsOthersClearly) {
   writeBytes(dir / "d.ls",
              "/PROG D\n/MN\n 1:L P[1] 10mm/sec FINE ;\n/POS\nP[1]{\n GP1:\n X = 1 mm, Y = 2 "
              "mm, Z = 3 mm, W = 0 deg, P = 0 deg, R = 0 deg\n};\n/END\n");
-  EXPECT_EQ(readPathFile(dir / "a.txt").points.size(), 2u);
-  EXPECT_EQ(readPathFile(dir / "b.csv").points.size(), 3u);
-  const ClProgram yaml = readPathFile(dir / "c.yaml");
+  EXPECT_EQ(readPathFile(dir / "a.txt").program.points.size(), 2u);
+  EXPECT_EQ(readPathFile(dir / "b.csv").program.points.size(), 3u);
+  // The format read comes back with the program, as detectPathFormat() finds it.
+  for (const auto& [name, format] :
+       {std::pair{"a.txt", PathFormat::Apt}, std::pair{"b.csv", PathFormat::Csv},
+        std::pair{"c.yaml", PathFormat::RosYaml}, std::pair{"d.ls", PathFormat::FanucLs}}) {
+    EXPECT_EQ(readPathFile(dir / name).format, format) << name;
+    EXPECT_EQ(detectPathFormat(dir / name, readBytes(dir / name)), format) << name;
+  }
+  const planning::ClProgram yaml = readPathFile(dir / "c.yaml").program;
   ASSERT_EQ(yaml.points.size(), 1u);
   EXPECT_TRUE(yaml.points[0].positionMm.isApprox(ddf::Vec3(1000, 2000, 3000), 1e-12));
   EXPECT_EQ(yaml.partName, "c");
-  const ClProgram ls = readPathFile(dir / "d.ls");
+  const planning::ClProgram ls = readPathFile(dir / "d.ls").program;
   ASSERT_EQ(ls.points.size(), 1u);
   EXPECT_DOUBLE_EQ(ls.points[0].feedMmPerMin, 600.0);
 
@@ -101,8 +110,8 @@ TEST(PathFile, ReadsEachFormatAndRejectsOthersClearly) {
 }
 
 /// Two paths as APT numbers them (a rapid ends a path, the next cut starts one), 5-axis.
-ClProgram sampleProgram() {
-  ClProgram program;
+planning::ClProgram sampleProgram() {
+  planning::ClProgram program;
   program.partName = "TRIP";
   const ddf::Vec3 positions[] = {{1.25, -2.5, 3.125},        {10.1234567, 20.7654321, -3.3},
                                  {-100.5, 0.0, 55.75},       {5, 5, 80},
@@ -114,7 +123,7 @@ ClProgram sampleProgram() {
   const int paths[] = {0, 0, 0, 0, 1, 1};
   const int indices[] = {0, 1, 2, 3, 0, 1};
   for (int i = 0; i < 6; ++i) {
-    ClPoint p;
+    planning::ClPoint p;
     p.path = paths[i];
     p.point = indices[i];
     p.positionMm = positions[i];
@@ -135,12 +144,12 @@ planning::Tool ballTool() {
   return tool;
 }
 
-void expectSameMoves(const ClProgram& read, const ClProgram& written, double positionTol,
-                     double axisTol, double feedTol) {
+void expectSameMoves(const planning::ClProgram& read, const planning::ClProgram& written,
+                     double positionTol, double axisTol, double feedTol) {
   ASSERT_EQ(read.points.size(), written.points.size());
   for (std::size_t i = 0; i < written.points.size(); ++i) {
-    const ClPoint& a = read.points[i];
-    const ClPoint& b = written.points[i];
+    const planning::ClPoint& a = read.points[i];
+    const planning::ClPoint& b = written.points[i];
     EXPECT_EQ(a.path, b.path) << i;
     EXPECT_EQ(a.point, b.point) << i;
     EXPECT_EQ(a.move, b.move) << i;
@@ -153,29 +162,29 @@ void expectSameMoves(const ClProgram& read, const ClProgram& written, double pos
 
 TEST(PathFile, CsvRoundTripThroughTheDispatcher) {
   const ScratchDir dir;
-  const ClProgram program = sampleProgram();
+  const planning::ClProgram program = sampleProgram();
   PathWriteParams params;
   params.format = PathFormat::Csv;
   writePathFile(program, ballTool(), dir / "trip.csv", params);
   // 6 decimals: positions within 5e-7 mm; axes re-normalised after rounding.
-  expectSameMoves(readPathFile(dir / "trip.csv"), program, 5e-7, 2e-6, 5e-7);
+  expectSameMoves(readPathFile(dir / "trip.csv").program, program, 5e-7, 2e-6, 5e-7);
   params.csv.unit = LengthUnit::Metre;
   params.csv.decimals = 7;
   writePathFile(program, ballTool(), dir / "trip_m.txt", params);
-  const ClProgram metres = readPathFile(dir / "trip_m.txt");
+  const planning::ClProgram metres = readPathFile(dir / "trip_m.txt").program;
   EXPECT_EQ(metres.sourceUnit, LengthUnit::Metre);
   expectSameMoves(metres, program, 5e-8 * 1000, 2e-7, 5e-8 * 1000);
 }
 
 TEST(PathFile, AptRoundTripThroughTheDispatcher) {
   const ScratchDir dir;
-  const ClProgram program = sampleProgram();
+  const planning::ClProgram program = sampleProgram();
   PathWriteParams params;
   params.format = PathFormat::Apt;
   params.apt.coordinateDecimals = 5;
   params.apt.vectorDecimals = 8;
   writePathFile(program, ballTool(), dir / "trip.apt", params);
-  const ClProgram mm = readPathFile(dir / "trip.apt");
+  const planning::ClProgram mm = readPathFile(dir / "trip.apt").program;
   expectSameMoves(mm, program, 5e-6, 1e-7, 5e-6);
   ASSERT_TRUE(mm.cutter.has_value());  // from the tool, the program had none
   EXPECT_DOUBLE_EQ(mm.cutter->diameterMm, 6.0);
@@ -183,15 +192,15 @@ TEST(PathFile, AptRoundTripThroughTheDispatcher) {
   params.apt.coordinateDecimals = 6;
   params.apt.feedUnitFirst = true;
   writePathFile(program, ballTool(), dir / "trip_in.cls", params);
-  const ClProgram inch = readPathFile(dir / "trip_in.cls");
+  const planning::ClProgram inch = readPathFile(dir / "trip_in.cls").program;
   EXPECT_EQ(inch.sourceUnit, LengthUnit::Inch);
   expectSameMoves(inch, program, 5e-7 * 25.4, 1e-7, 5e-7 * 25.4);
 }
 
 TEST(PathFile, WritesGCodeButDoesNotReadIt) {
   const ScratchDir dir;
-  ClProgram program = sampleProgram();
-  for (ClPoint& p : program.points) p.axis = ddf::Vec3::UnitZ();
+  planning::ClProgram program = sampleProgram();
+  for (planning::ClPoint& p : program.points) p.axis = ddf::Vec3::UnitZ();
   PathWriteParams params;
   params.format = PathFormat::GCode;
   writePathFile(program, ballTool(), dir / "trip.ngc", params);

@@ -53,12 +53,12 @@ const char* const kTwoPaths = R"(# a sanding job
 )";
 
 TEST(RosToolpathReader, ReadsPositionsInMillimetresAndAxesFromQuaternions) {
-  const ClProgram program = decodeRosToolpathYaml(kTwoPaths, "job.yaml");
+  const planning::ClProgram program = decodeRosToolpathYaml(kTwoPaths, "job.yaml");
   ASSERT_EQ(program.points.size(), 3u);
   EXPECT_EQ(program.sourceUnit, LengthUnit::Metre);
-  EXPECT_EQ(program.pointKind, ClPointKind::ToolReference);
+  EXPECT_EQ(program.pointKind, planning::ClPointKind::ToolReference);
   EXPECT_EQ(program.pathCount(), 2);
-  const ClPoint& a = program.points[0];
+  const planning::ClPoint& a = program.points[0];
   EXPECT_EQ(a.path, 0);
   EXPECT_EQ(a.point, 0);
   EXPECT_TRUE(a.positionMm.isApprox(ddf::Vec3(1, 2, 3), 1e-12));
@@ -67,12 +67,12 @@ TEST(RosToolpathReader, ReadsPositionsInMillimetresAndAxesFromQuaternions) {
   EXPECT_EQ(a.move, planning::MoveKind::Cut);
   EXPECT_EQ(a.feedMmPerMin, 0.0);
   EXPECT_EQ(a.sourceLine, 7);
-  const ClPoint& b = program.points[1];
+  const planning::ClPoint& b = program.points[1];
   EXPECT_EQ(b.point, 1);
   EXPECT_TRUE(b.positionMm.isApprox(ddf::Vec3(-1000, 500, 2.5), 1e-12));
   // 90 degrees about +x turns +z into -y.
   EXPECT_LT((*b.axis - ddf::Vec3(0, -1, 0)).norm(), 1e-12);
-  const ClPoint& c = program.points[2];
+  const planning::ClPoint& c = program.points[2];
   EXPECT_EQ(c.path, 1);
   EXPECT_EQ(c.point, 0);
   // 180 degrees about +y turns +z into -z.
@@ -89,7 +89,7 @@ TEST(RosToolpathReader, AcceptsARootMappingAndNormalisesQuaternionsWithAWarning)
       "  - position: {x: 0, y: 0, z: 1}\n"
       "    orientation: {x: 0, y: 0, z: 0, w: 2}\n"
       "- poses: []\n";
-  const ClProgram program = decodeRosToolpathYaml(text, "t.yaml");
+  const planning::ClProgram program = decodeRosToolpathYaml(text, "t.yaml");
   ASSERT_EQ(program.points.size(), 1u);
   EXPECT_TRUE(program.points[0].axis->isApprox(ddf::Vec3::UnitZ(), 1e-15));
   ASSERT_EQ(program.warnings.size(), 2u);
@@ -183,9 +183,9 @@ TEST(RosToolpathReader, EveryTruncationOfAValidFileReadsOrFailsCleanly) {
   int failures = 0;
   for (std::size_t n = 0; n <= text.size(); ++n) {
     try {
-      const ClProgram program = decodeRosToolpathYaml(text.substr(0, n), "t.yaml");
+      const planning::ClProgram program = decodeRosToolpathYaml(text.substr(0, n), "t.yaml");
       EXPECT_LE(program.points.size(), 3u);
-      for (const ClPoint& p : program.points) EXPECT_NEAR(p.axis->norm(), 1.0, 1e-12);
+      for (const planning::ClPoint& p : program.points) EXPECT_NEAR(p.axis->norm(), 1.0, 1e-12);
     } catch (const IoError&) {
       ++failures;
     }

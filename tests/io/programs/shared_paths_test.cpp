@@ -69,7 +69,7 @@ TEST(SharedPaths, EveryFileIsReadOrKnownNotToBeAToolPath) {
       EXPECT_EQ(test::ioErrorMessage([&] { readPathFile(entry.path()); }),
                 notAPathMessage(entry.path()));
     } else if (kAptFiles.count(name) || name == kYaml || name == kLs) {
-      EXPECT_GT(readPathFile(entry.path()).points.size(), 0u);
+      EXPECT_GT(readPathFile(entry.path()).program.points.size(), 0u);
     } else if (name == kPosted) {
       EXPECT_EQ(detectPathFormat(entry.path(), test::readBytes(entry.path())), PathFormat::GCode);
       EXPECT_THAT(test::ioErrorMessage([&] { readPathFile(entry.path()); }),
@@ -77,7 +77,7 @@ TEST(SharedPaths, EveryFileIsReadOrKnownNotToBeAToolPath) {
     } else if (name == kCsv) {
       PathReadParams params;
       params.csv.unitIfUnstated = LengthUnit::Metre;
-      EXPECT_EQ(readPathFile(entry.path(), params).points.size(), 98u);
+      EXPECT_EQ(readPathFile(entry.path(), params).program.points.size(), 98u);
     } else {
       ADD_FAILURE() << "new file under shared/data/paths: add it and its oracle to this test";
     }
@@ -93,22 +93,22 @@ TEST(SharedPaths, EveryFileIsReadOrKnownNotToBeAToolPath) {
 
 TEST(SharedPaths, RosYamlMatchesTheDerivedCsvAndTheRawText) {
   SKIP_WITHOUT_SHARED_DATA();
-  const ClProgram yaml = readPathFile(kRoot / kYaml);
+  const planning::ClProgram yaml = readPathFile(kRoot / kYaml).program;
   PathReadParams params;
   params.csv.unitIfUnstated = LengthUnit::Metre;
-  const ClProgram csv = readPathFile(kRoot / kCsv, params);
+  const planning::ClProgram csv = readPathFile(kRoot / kCsv, params).program;
   ASSERT_EQ(yaml.points.size(), 98u);
   ASSERT_EQ(csv.points.size(), 98u);
   EXPECT_EQ(yaml.pathCount(), 7);
   EXPECT_EQ(csv.pathCount(), 7);
   EXPECT_EQ(yaml.sourceUnit, LengthUnit::Metre);
-  EXPECT_EQ(yaml.pointKind, ClPointKind::ToolReference);
+  EXPECT_EQ(yaml.pointKind, planning::ClPointKind::ToolReference);
   // The derived CSV is the YAML's poses, pose for pose: same path and point indices, and the
   // tool z axis (the quaternion applied to +Z) as i,j,k.
   std::vector<int> yamlSizes(7, 0), csvSizes(7, 0);
   for (std::size_t i = 0; i < 98; ++i) {
-    const ClPoint& a = yaml.points[i];
-    const ClPoint& b = csv.points[i];
+    const planning::ClPoint& a = yaml.points[i];
+    const planning::ClPoint& b = csv.points[i];
     ASSERT_TRUE(a.path >= 0 && a.path < 7 && b.path >= 0 && b.path < 7) << i;
     EXPECT_EQ(a.path, b.path) << i;
     EXPECT_EQ(a.point, yamlSizes[a.path]++) << i;
@@ -184,13 +184,13 @@ TEST(SharedPaths, RosPathLiesOnThePartItWasPlannedOn) {
   params.csv.unitIfUnstated = LengthUnit::Metre;
   for (const char* file : {kYaml, kCsv}) {
     SCOPED_TRACE(file);
-    const ClProgram program = readPathFile(kRoot / file, params);
+    const planning::ClProgram program = readPathFile(kRoot / file, params).program;
     ASSERT_EQ(program.points.size(), 98u);
     double worstDistance = 0.0, worstCos = 1.0;
     // The CSV's last row is not a pose of the path (see the test above).
     const std::size_t count = std::string(file) == kCsv ? 97 : 98;
     for (std::size_t i = 0; i < count; ++i) {
-      const ClPoint& point = program.points[i];
+      const planning::ClPoint& point = program.points[i];
       double nearest = INFINITY;
       ddf::Vec3 normal = ddf::Vec3::Zero();
       for (const auto& t : mesh.triangles) {
@@ -221,7 +221,7 @@ TEST(SharedPaths, RosPathLiesOnThePartItWasPlannedOn) {
 
 TEST(SharedPaths, FanucProgramMatchesItsRawText) {
   SKIP_WITHOUT_SHARED_DATA();
-  const ClProgram p = readPathFile(kRoot / kLs);
+  const planning::ClProgram p = readPathFile(kRoot / kLs).program;
   EXPECT_EQ(p.partName, "surface_cartesian");
   ASSERT_EQ(p.points.size(), 21u);
   EXPECT_EQ(p.pathCount(), 1);
@@ -231,7 +231,7 @@ TEST(SharedPaths, FanucProgramMatchesItsRawText) {
     EXPECT_EQ(p.points[i].move, MoveKind::Cut) << i;
     EXPECT_DOUBLE_EQ(p.points[i].feedMmPerMin, 12000.0) << i;  // 200 mm/sec
   }
-  for (const ClPoint& point : p.points) EXPECT_NEAR(point.axis->norm(), 1.0, 1e-12);
+  for (const planning::ClPoint& point : p.points) EXPECT_NEAR(point.axis->norm(), 1.0, 1e-12);
   // P[1] from the raw text.
   const std::string text = test::readBytes(kRoot / kLs);
   const std::size_t entry = text.find("P[1]{");
@@ -239,7 +239,7 @@ TEST(SharedPaths, FanucProgramMatchesItsRawText) {
     const std::size_t at = text.find(key, entry);
     return std::strtod(text.c_str() + at + std::strlen(key), nullptr);
   };
-  const ClPoint& first = p.points[0];
+  const planning::ClPoint& first = p.points[0];
   EXPECT_EQ(first.positionMm, ddf::Vec3(raw("X ="), raw("Y ="), raw("Z =")));
   EXPECT_EQ(first.positionMm.x(), 653.350855);
   // Tool z axis of R = Rz(R) Ry(P) Rx(W) multiplied out by hand.
@@ -286,7 +286,7 @@ TEST_P(SharedAptFiles, EveryMotionRecordIsAPointInOrder) {
   SKIP_WITHOUT_SHARED_DATA();
   const auto& [name, unit] = GetParam();
   const std::string text = test::readBytes(kRoot / name);
-  const ClProgram program = readPathFile(kRoot / name);
+  const planning::ClProgram program = readPathFile(kRoot / name).program;
   EXPECT_EQ(program.sourceUnit, unit);
   const double scale = unit == LengthUnit::Inch ? 25.4 : 1.0;
   const std::vector<RawMotion> raw = rawMotions(text);
@@ -314,7 +314,7 @@ TEST_P(SharedAptFiles, EveryMotionRecordIsAPointInOrder) {
     if (!hasCircles) {
       EXPECT_EQ(next, from) << "unexpected point before line " << m.line;
     }
-    const ClPoint& point = program.points[next++];
+    const planning::ClPoint& point = program.points[next++];
     if (m.values.size() >= 6) {
       const ddf::Vec3 axis = ddf::Vec3(m.values[3], m.values[4], m.values[5]).normalized();
       ASSERT_TRUE(point.axis.has_value()) << "line " << m.line;
@@ -326,7 +326,7 @@ TEST_P(SharedAptFiles, EveryMotionRecordIsAPointInOrder) {
   }
   // Bounds: those of the records, grown only by arcs.
   ddf::Vec3 lo = ddf::Vec3::Constant(INFINITY), hi = -lo;
-  for (const ClPoint& p : program.points) {
+  for (const planning::ClPoint& p : program.points) {
     lo = lo.cwiseMin(p.positionMm);
     hi = hi.cwiseMax(p.positionMm);
   }
@@ -344,21 +344,23 @@ INSTANTIATE_TEST_SUITE_P(PathFile, SharedAptFiles, ::testing::ValuesIn(kAptFiles
 
 TEST(SharedPaths, AptFilesHaveTheDocumentedCountsAndFeeds) {
   SKIP_WITHOUT_SHARED_DATA();
-  const ClProgram variable = readPathFile(kRoot / "mech491-nx-clsf/APT_Variable_Axis.txt");
+  const planning::ClProgram variable =
+      readPathFile(kRoot / "mech491-nx-clsf/APT_Variable_Axis.txt").program;
   EXPECT_EQ(variable.points.size(), 348u);  // README: 348 GOTO, 329 with a tool axis
   EXPECT_TRUE(variable.multiAxis());
-  const auto cutFeed = [](const ClProgram& p) {
-    for (const ClPoint& point : p.points)
+  const auto cutFeed = [](const planning::ClProgram& p) {
+    for (const planning::ClPoint& point : p.points)
       if (point.move == MoveKind::Cut) return point.feedMmPerMin;
     return 0.0;
   };
   EXPECT_DOUBLE_EQ(cutFeed(variable), 10.0 * 25.4);  // FEDRAT/IPM,10
-  const ClProgram proe = readPathFile(kRoot / "nist-proe-clfile/traj1.ncl");
+  const planning::ClProgram proe = readPathFile(kRoot / "nist-proe-clfile/traj1.ncl").program;
   EXPECT_EQ(proe.points.size(), 61u);  // FROM + 60 GOTO
   EXPECT_EQ(proe.partName, "CORE_WORK");
   EXPECT_DOUBLE_EQ(cutFeed(proe), 10.0 * 25.4);     // FEDRAT / 10, IPM
   EXPECT_EQ(proe.points[0].move, MoveKind::Rapid);  // FROM
-  const ClProgram zig = readPathFile(kRoot / "mech491-nx-clsf/APT_Zig_Zag_Smoothed.txt");
+  const planning::ClProgram zig =
+      readPathFile(kRoot / "mech491-nx-clsf/APT_Zig_Zag_Smoothed.txt").program;
   EXPECT_DOUBLE_EQ(cutFeed(zig), 250.0);  // FEDRAT/MMPM,250
   EXPECT_GT(zig.points.size(), 75u);      // 75 GOTO and 35 interpolated arcs
 }

@@ -33,15 +33,15 @@ std::vector<std::string> linesOf(const std::string& text) {
 }
 
 /// Two hand-made points: a 5-axis cut and a rapid without axis and normal.
-ClProgram handMade(ClPointKind kind) {
-  ClProgram program;
+planning::ClProgram handMade(planning::ClPointKind kind) {
+  planning::ClProgram program;
   program.pointKind = kind;
-  ClPoint a;
+  planning::ClPoint a;
   a.positionMm = {25.4, -2.0, 0.5};
   a.axis = ddf::Vec3(0, 0.6, 0.8);
   a.normal = ddf::Vec3(0, 0, 1);
   a.feedMmPerMin = 254.0;
-  ClPoint b;
+  planning::ClPoint b;
   b.path = 1;
   b.point = 3;
   b.positionMm = {0.0, 50.8, -1.25};
@@ -51,29 +51,32 @@ ClProgram handMade(ClPointKind kind) {
 }
 
 TEST(ToolPathCsv, HeaderNamesThePointKindAndTheUnits) {
-  EXPECT_EQ(toolPathCsvHeader(ClPointKind::Contact),
+  EXPECT_EQ(toolPathCsvHeader(planning::ClPointKind::Contact),
             "path,point,contact_x_mm,contact_y_mm,contact_z_mm,axis_i,axis_j,axis_k,normal_x,"
             "normal_y,normal_z,feed_mm_per_min,move");
-  EXPECT_EQ(toolPathCsvHeader(ClPointKind::ToolReference, LengthUnit::Inch),
+  EXPECT_EQ(toolPathCsvHeader(planning::ClPointKind::ToolReference, LengthUnit::Inch),
             "path,point,tool_x_in,tool_y_in,tool_z_in,axis_i,axis_j,axis_k,normal_x,normal_y,"
             "normal_z,feed_in_per_min,move");
-  EXPECT_THAT(toolPathCsvHeader(ClPointKind::Contact, LengthUnit::Metre),
+  EXPECT_THAT(toolPathCsvHeader(planning::ClPointKind::Contact, LengthUnit::Metre),
               HasSubstr("contact_z_m,axis_i"));
 }
 
 TEST(ToolPathCsv, WritesTheDocumentedColumns) {
-  const std::string mm = encodeToolPathCsv(handMade(ClPointKind::Contact), {.decimals = 3});
-  EXPECT_EQ(mm, toolPathCsvHeader(ClPointKind::Contact) +
+  const std::string mm =
+      encodeToolPathCsv(handMade(planning::ClPointKind::Contact), {.decimals = 3});
+  EXPECT_EQ(mm, toolPathCsvHeader(planning::ClPointKind::Contact) +
                     "\n"
                     "0,0,25.400,-2.000,0.500,0.000,0.600,0.800,0.000,0.000,1.000,254.000,cut\n"
                     "1,3,0.000,50.800,-1.250,,,,,,,0.000,rapid\n");
-  const std::string inch = encodeToolPathCsv(handMade(ClPointKind::ToolReference),
+  const std::string inch = encodeToolPathCsv(handMade(planning::ClPointKind::ToolReference),
                                              {.decimals = 2, .unit = LengthUnit::Inch});
   EXPECT_EQ(linesOf(inch)[1], "0,0,1.00,-0.08,0.02,0.00,0.60,0.80,0.00,0.00,1.00,10.00,cut");
   EXPECT_EQ(linesOf(inch)[2], "1,3,0.00,2.00,-0.05,,,,,,,0.00,rapid");
-  EXPECT_THROW(encodeToolPathCsv(handMade(ClPointKind::Contact), {.decimals = 18}), InvalidInput);
-  EXPECT_THROW(encodeToolPathCsv(handMade(ClPointKind::Contact), {.decimals = -1}), InvalidInput);
-  ClProgram bad = handMade(ClPointKind::Contact);
+  EXPECT_THROW(encodeToolPathCsv(handMade(planning::ClPointKind::Contact), {.decimals = 18}),
+               InvalidInput);
+  EXPECT_THROW(encodeToolPathCsv(handMade(planning::ClPointKind::Contact), {.decimals = -1}),
+               InvalidInput);
+  planning::ClProgram bad = handMade(planning::ClPointKind::Contact);
   bad.points[1].positionMm.x() = NAN;
   EXPECT_THROW(encodeToolPathCsv(bad), InvalidInput);
 }
@@ -90,8 +93,9 @@ TEST(ToolPathCsv, DecimalPointIgnoresTheGlobalLocale) {
   const std::locale previous =
       std::locale::global(std::locale(std::locale::classic(), new CommaDecimal));
   const char* german = std::setlocale(LC_ALL, "de_DE.UTF-8");
-  const std::string text = encodeToolPathCsv(handMade(ClPointKind::Contact), {.decimals = 3});
-  const ClProgram back = decodeToolPathCsv(text, "de.csv");
+  const std::string text =
+      encodeToolPathCsv(handMade(planning::ClPointKind::Contact), {.decimals = 3});
+  const planning::ClProgram back = decodeToolPathCsv(text, "de.csv");
   std::setlocale(LC_ALL, "C");
   std::locale::global(previous);
   EXPECT_THAT(linesOf(text)[1], HasSubstr("25.400,-2.000,0.500"));
@@ -102,16 +106,16 @@ TEST(ToolPathCsv, DecimalPointIgnoresTheGlobalLocale) {
 }
 
 /// A random program: 1-4 paths of 1-20 points, all columns exercised.
-ClProgram randomProgram(std::mt19937& rng, ClPointKind kind) {
+planning::ClProgram randomProgram(std::mt19937& rng, planning::ClPointKind kind) {
   std::uniform_real_distribution<double> coordinate(-500.0, 500.0), unit(-1.0, 1.0);
   std::uniform_int_distribution<int> count(1, 20), paths(1, 4), move(0, 2), coin(0, 3);
-  ClProgram program;
+  planning::ClProgram program;
   program.pointKind = kind;
   const int pathCount = paths(rng);
   for (int path = 0; path < pathCount; ++path) {
     const int points = count(rng);
     for (int point = 0; point < points; ++point) {
-      ClPoint p;
+      planning::ClPoint p;
       p.path = path;
       p.point = point;
       p.positionMm = {coordinate(rng), coordinate(rng), coordinate(rng)};
@@ -125,15 +129,16 @@ ClProgram randomProgram(std::mt19937& rng, ClPointKind kind) {
   return program;
 }
 
-void expectSameToPrecision(const ClProgram& a, const ClProgram& b, double unitMm, int decimals) {
+void expectSameToPrecision(const planning::ClProgram& a, const planning::ClProgram& b,
+                           double unitMm, int decimals) {
   const std::vector<std::optional<ddf::Vec3>> axes = test::axesInForce(a);
   ASSERT_EQ(a.points.size(), b.points.size());
   EXPECT_EQ(a.pointKind, b.pointKind);
   const double lengthTolerance = 0.51 * std::pow(10.0, -decimals) * unitMm + 1e-9;
   const double vectorTolerance = 2.0 * std::pow(10.0, -decimals) + 1e-12;
   for (std::size_t i = 0; i < a.points.size(); ++i) {
-    const ClPoint& p = a.points[i];
-    const ClPoint& q = b.points[i];
+    const planning::ClPoint& p = a.points[i];
+    const planning::ClPoint& q = b.points[i];
     EXPECT_EQ(p.path, q.path) << i;
     EXPECT_EQ(p.point, q.point) << i;
     EXPECT_EQ(p.move, q.move) << i;
@@ -155,14 +160,15 @@ void expectSameToPrecision(const ClProgram& a, const ClProgram& b, double unitMm
 
 TEST(ToolPathCsv, RoundTripKeepsTheWrittenPrecision) {
   std::mt19937 rng(7);
-  for (const ClPointKind kind : {ClPointKind::Contact, ClPointKind::ToolReference})
+  for (const planning::ClPointKind kind :
+       {planning::ClPointKind::Contact, planning::ClPointKind::ToolReference})
     for (const LengthUnit unit : {LengthUnit::Millimetre, LengthUnit::Inch, LengthUnit::Metre})
       for (const int decimals : {4, 6, 9}) {
-        const ClProgram program = randomProgram(rng, kind);
+        const planning::ClProgram program = randomProgram(rng, kind);
         // The reader must take the unit from the header, whatever it is told to assume.
-        const ClProgram back = decodeToolPathCsv(
+        const planning::ClProgram back = decodeToolPathCsv(
             encodeToolPathCsv(program, {.decimals = decimals, .unit = unit}), "t.csv",
-            {.unitIfUnstated = LengthUnit::Inch, .kindIfUnstated = ClPointKind::Contact});
+            {.unitIfUnstated = LengthUnit::Inch, .kindIfUnstated = planning::ClPointKind::Contact});
         expectSameToPrecision(program, back, millimetresPer(unit), decimals);
         EXPECT_EQ(back.sourceUnit, unit);
         EXPECT_EQ(back.partName, "t");
@@ -172,16 +178,16 @@ TEST(ToolPathCsv, RoundTripKeepsTheWrittenPrecision) {
 TEST(ToolPathCsv, FileRoundTripAndOneFilePerProgram) {
   test::ScratchDir dir;
   std::mt19937 rng(3);
-  const ClProgram program = randomProgram(rng, ClPointKind::Contact);
+  const planning::ClProgram program = randomProgram(rng, planning::ClPointKind::Contact);
   writeToolPathCsv(program, dir / "p.csv", {.decimals = 12});
   expectSameToPrecision(program, readToolPathCsv(dir / "p.csv"), 1.0, 12);
   EXPECT_THROW(readToolPathCsv(dir / "missing.csv"), IoError);
 
-  const std::vector<NamedProgram> programs = {
-      {"left wing", randomProgram(rng, ClPointKind::Contact)},
-      {"left-wing", randomProgram(rng, ClPointKind::Contact)},
-      {"left/wing", randomProgram(rng, ClPointKind::Contact)},
-      {"", randomProgram(rng, ClPointKind::Contact)}};
+  const std::vector<planning::NamedProgram> programs = {
+      {"left wing", randomProgram(rng, planning::ClPointKind::Contact)},
+      {"left-wing", randomProgram(rng, planning::ClPointKind::Contact)},
+      {"left/wing", randomProgram(rng, planning::ClPointKind::Contact)},
+      {"", randomProgram(rng, planning::ClPointKind::Contact)}};
   const std::vector<std::filesystem::path> files =
       writeToolPathCsvFiles(programs, dir / "job.csv", {.decimals = 9});
   const std::vector<std::filesystem::path> expected = {
@@ -197,16 +203,16 @@ TEST(ToolPathCsv, FileRoundTripAndOneFilePerProgram) {
 }
 
 TEST(ToolPathCsv, ReadsThreeAndSixColumnVariantsWithAnyDelimiter) {
-  const ClProgram blanks = decodeToolPathCsv("1 2 3\n  4\t5   6.5e1\n", "b.xyz");
+  const planning::ClProgram blanks = decodeToolPathCsv("1 2 3\n  4\t5   6.5e1\n", "b.xyz");
   ASSERT_EQ(blanks.points.size(), 2u);
   EXPECT_EQ(blanks.points[1].positionMm, ddf::Vec3(4, 5, 65));
   EXPECT_EQ(blanks.points[1].point, 1);
   EXPECT_EQ(blanks.points[1].sourceLine, 2);
   EXPECT_FALSE(blanks.points[0].axis.has_value());
-  EXPECT_EQ(blanks.pointKind, ClPointKind::ToolReference);
+  EXPECT_EQ(blanks.pointKind, planning::ClPointKind::ToolReference);
   EXPECT_EQ(blanks.partName, "b");
 
-  const ClProgram semicolons =
+  const planning::ClProgram semicolons =
       decodeToolPathCsv("X;Y;Z;I;J;K\r\n1;2;3;0;0;2\r\n\r\n+1.5;-2;3e-1;3;4;0\r\n", "s.csv");
   ASSERT_EQ(semicolons.points.size(), 2u);
   EXPECT_EQ(*semicolons.points[0].axis, ddf::Vec3(0, 0, 1));  // normalised
@@ -214,12 +220,12 @@ TEST(ToolPathCsv, ReadsThreeAndSixColumnVariantsWithAnyDelimiter) {
   EXPECT_EQ(semicolons.points[1].positionMm, ddf::Vec3(1.5, -2, 0.3));
   EXPECT_EQ(semicolons.points[1].sourceLine, 4);
 
-  const ClProgram tabs =
+  const planning::ClProgram tabs =
       decodeToolPathCsv("x\ty\tz\n1\t2\t3\n", "t.tsv", {.unitIfUnstated = LengthUnit::Inch});
   EXPECT_LT((tabs.points[0].positionMm - ddf::Vec3(25.4, 50.8, 76.2)).norm(), 1e-12);
   EXPECT_EQ(tabs.sourceUnit, LengthUnit::Inch);
 
-  const ClProgram headerless = decodeToolPathCsv("1,2,3,0,1,0\n", "h.csv");
+  const planning::ClProgram headerless = decodeToolPathCsv("1,2,3,0,1,0\n", "h.csv");
   EXPECT_EQ(*headerless.points[0].axis, ddf::Vec3(0, 1, 0));
 }
 
@@ -233,7 +239,7 @@ TEST(ToolPathCsv, ReadsPathColumnsCommentsAndUnitsFromTheHeader) {
       "  # between paths\n"
       "3, 0.007, 0.008, 0.009, bad\n"
       "7, 0.010, 0.011, 0.012, good\n";
-  const ClProgram program = decodeToolPathCsv(text, "robot.csv");
+  const planning::ClProgram program = decodeToolPathCsv(text, "robot.csv");
   ASSERT_EQ(program.points.size(), 4u);
   EXPECT_EQ(program.sourceUnit, LengthUnit::Metre);
   EXPECT_LT((program.points[0].positionMm - ddf::Vec3(1, 2, 3)).norm(), 1e-12);
@@ -248,15 +254,15 @@ TEST(ToolPathCsv, ReadsPathColumnsCommentsAndUnitsFromTheHeader) {
   EXPECT_EQ(program.warnings[0].line, 3);
   EXPECT_THAT(program.warnings[0].text, HasSubstr("'quality'"));
 
-  const ClProgram four = decodeToolPathCsv("2 1 1 1\n2 2 2 2\n5 3 3 3\n", "four.txt");
+  const planning::ClProgram four = decodeToolPathCsv("2 1 1 1\n2 2 2 2\n5 3 3 3\n", "four.txt");
   EXPECT_EQ(four.pathCount(), 2);
   EXPECT_EQ(four.points[2].positionMm, ddf::Vec3(3, 3, 3));
 
-  const ClProgram own = decodeToolPathCsv(
+  const planning::ClProgram own = decodeToolPathCsv(
       "path,point,contact_x_in,contact_y_in,contact_z_in,normal_x,normal_y,normal_z,"
       "feed_in_per_min,move\n0,0,1,2,3,0,0,5,10,LINK\n",
       "own.csv", {.unitIfUnstated = LengthUnit::Metre});
-  EXPECT_EQ(own.pointKind, ClPointKind::Contact);
+  EXPECT_EQ(own.pointKind, planning::ClPointKind::Contact);
   EXPECT_EQ(own.sourceUnit, LengthUnit::Inch);
   EXPECT_LT((own.points[0].positionMm - ddf::Vec3(25.4, 50.8, 76.2)).norm(), 1e-12);
   EXPECT_EQ(*own.points[0].normal, ddf::Vec3(0, 0, 1));
@@ -269,13 +275,13 @@ TEST(ToolPathCsv, ReadsTheSharedRoboticSandingPath) {
   const std::filesystem::path file = std::filesystem::path(DDFCAM_SHARED_DATA_DIR) / "paths" /
                                      "crs-robotic-sanding" / "part_2_job_0_degrees.xyzijk.csv";
   if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " is absent (shared data)";
-  const ClProgram program = readToolPathCsv(file, {.unitIfUnstated = LengthUnit::Metre});
+  const planning::ClProgram program = readToolPathCsv(file, {.unitIfUnstated = LengthUnit::Metre});
   ASSERT_EQ(program.points.size(), 98u);
   EXPECT_EQ(program.pathCount(), 7);
   EXPECT_EQ(program.sourceUnit, LengthUnit::Metre);
   EXPECT_EQ(program.comments.size(), 1u);
   std::set<int> paths;
-  for (const ClPoint& p : program.points) {
+  for (const planning::ClPoint& p : program.points) {
     ASSERT_TRUE(p.axis.has_value());
     EXPECT_NEAR(p.axis->norm(), 1.0, 1e-12);
     EXPECT_LT(p.positionMm.norm(), 2000.0);  // metres read as millimetres
@@ -283,7 +289,7 @@ TEST(ToolPathCsv, ReadsTheSharedRoboticSandingPath) {
   }
   EXPECT_EQ(paths, (std::set<int>{0, 1, 2, 3, 4, 5, 6}));
   // First row of the file (line 2): 0,0.605343,-0.122467,-0.052194,0.096173,-0.164257,0.981718
-  const ClPoint& first = program.points.front();
+  const planning::ClPoint& first = program.points.front();
   EXPECT_EQ(first.sourceLine, 2);
   EXPECT_LT((first.positionMm - ddf::Vec3(605.343, -122.467, -52.194)).norm(), 1e-9);
   EXPECT_LT((*first.axis - ddf::Vec3(0.096173, -0.164257, 0.981718).normalized()).norm(), 1e-12);
@@ -301,7 +307,7 @@ std::string errorOf(const std::string& text, const CsvReadParams& params = {}) {
 }
 
 TEST(ToolPathCsv, BadInputNamesTheLine) {
-  const std::string own = toolPathCsvHeader(ClPointKind::Contact) + "\n";
+  const std::string own = toolPathCsvHeader(planning::ClPointKind::Contact) + "\n";
   const std::string row = "0,0,1,2,3,0,0,1,0,0,1,100,cut\n";
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"x,y,z\n1,2,3\n1,2\n", "bad.csv: line 3: 2 fields, expected 3"},
@@ -336,7 +342,7 @@ TEST(ToolPathCsv, GarbageNeverCrashesTheReader) {
   // Random bytes, and valid files with bytes flipped, cut or duplicated: only IoError.
   std::mt19937 rng(5);
   std::uniform_int_distribution<int> byte(0, 255), length(0, 200);
-  const std::string valid = encodeToolPathCsv(randomProgram(rng, ClPointKind::Contact)) +
+  const std::string valid = encodeToolPathCsv(randomProgram(rng, planning::ClPointKind::Contact)) +
                             "x,y,z\n1 2 3\n# c\n;;;\n,,,,,,\n";
   const std::string alphabet = "0123456789.,;-+eE \t\n\r#xyzijkpathcutlinkrapidnanINF\"";
   std::uniform_int_distribution<std::size_t> pick(0, alphabet.size() - 1);
@@ -353,8 +359,8 @@ TEST(ToolPathCsv, GarbageNeverCrashesTheReader) {
       text.resize(at(rng));
     }
     try {
-      const ClProgram program = decodeToolPathCsv(text, "garbage.csv");
-      for (const ClPoint& p : program.points) {
+      const planning::ClProgram program = decodeToolPathCsv(text, "garbage.csv");
+      for (const planning::ClPoint& p : program.points) {
         EXPECT_TRUE(p.positionMm.allFinite());
         EXPECT_GE(p.path, 0);
         if (p.axis) {

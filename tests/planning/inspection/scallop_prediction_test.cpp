@@ -90,6 +90,19 @@ TEST(ScallopPrediction, SimulatedBallOnPlaneMatchesExactScallop) {
   EXPECT_NEAR(row.simulatedMm, row.predictedMm, params.chordToleranceMm + 1e-4);
 }
 
+// The scallop table's default precision (the Error map panel's first row): a ball R5, passes
+// 1 mm apart on a plane, four passes of 6 mm and a tool mesh within 0.5 micrometres.
+TEST(ScallopPrediction, DefaultPrecisionBallOnPlaneMatchesExactScallop) {
+  ScallopCase c;
+  c.label = "ball R5, plane";
+  c.radiusMm = 5.0;
+  c.spacingMm = 1.0;
+  const ScallopSimulationParams params;
+  const ScallopRow row = simulateScallopCase(c, params);
+  EXPECT_NEAR(row.predictedMm, 5.0 - std::sqrt(25.0 - 0.25), 1e-12);
+  EXPECT_NEAR(row.simulatedMm, row.predictedMm, params.chordToleranceMm + 1e-4);
+}
+
 TEST(ScallopPrediction, SimulatedBallOnConvexCylinder) {
   ScallopCase c;
   c.radiusMm = 2.0;

@@ -42,6 +42,23 @@ TEST(LineOrdering, DropsRepeatedPointsAndFoldBacks) {
   EXPECT_EQ(line.seedIndex, 2u);
 }
 
+TEST(LineOrdering, TheSeedIndexFollowsItsPoint) {
+  Streamline line;
+  // A A B C C D with the seed on the second C: it stays on C, now at index 2.
+  line.points = {at(0), at(0), at(1), at(2), at(2), at(3)};
+  line.seedIndex = 4;
+  dropRepeatedPoints(line);
+  ASSERT_EQ(line.points.size(), 4u);
+  EXPECT_EQ(line.points[line.seedIndex].point.x(), 2.0);
+  // A B A C with the seed on B: B folds back onto A, which takes the seed's place.
+  line.points = {at(0), at(1), at(0), at(2)};
+  line.seedIndex = 1;
+  dropRepeatedPoints(line);
+  ASSERT_EQ(line.points.size(), 2u);
+  EXPECT_EQ(line.seedIndex, 0u);
+  EXPECT_EQ(line.points[1].point.x(), 2.0);
+}
+
 TEST(LineOrdering, ReversingTwiceGivesTheLineBack) {
   Streamline line;
   line.points = {at(0), at(1), at(2), at(5)};

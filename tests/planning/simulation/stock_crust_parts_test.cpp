@@ -71,11 +71,12 @@ std::vector<Contact> ballContacts(const ddf::DisplacementField& design,
                                   const ddf::TriangleMesh& surface, int stride) {
   std::vector<Contact> out;
   const int n = design.raster().steps();
+  const test::TriangleRuns nearest(surface);
   for (int f = 0; f < design.faceCount(); f += stride) {
     const int i = n / 3, k = n / 3;
     const Vec3 q = design.surfacePoint(f, i, k);
     const Vec3 centre = q + kBallRadiusMm * ddf::rasterNormal(design, f, i, k);
-    if (test::meshDistance(surface, centre) >= kBallRadiusMm * (1.0 - 1e-3))
+    if (nearest.distance(centre) >= kBallRadiusMm * (1.0 - 1e-3))
       out.push_back({f, i, k, centre});
   }
   return out;

@@ -18,6 +18,8 @@ struct SurfaceLocation {
   Vec3 bary = Vec3::Zero();   ///< barycentric coordinates in the face's local order, sum 1
   double h = 0.0;             ///< surface height at bary (raster interpolation), vector units
   Vec3 point = Vec3::Zero();  ///< g + h v at bary, mm, part frame
+
+  bool operator==(const SurfaceLocation&) const = default;
 };
 
 /// @brief Value at barycentric coordinates @p bary of face @p face of a per-raster-point

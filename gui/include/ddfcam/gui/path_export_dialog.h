@@ -3,7 +3,7 @@
 // which paths, file), their checks, the dialog that gathers them and the write itself.
 #pragma once
 
-#include <ddfcam/io/programs/cl_program.h>
+#include <ddfcam/planning/placement/cl_program.h>
 
 #include <QDialog>
 #include <QString>
@@ -63,10 +63,10 @@ struct PathExportOptions {
   int coordinateDecimals = 6;
   /// Digits after the point of unit vectors: APT 6..9; CSV uses coordinateDecimals (default 7).
   int vectorDecimals = 7;
-  io::LengthUnit unit = io::LengthUnit::Millimetre;  ///< mm or inch (default mm)
+  LengthUnit unit = LengthUnit::Millimetre;  ///< mm or inch (default mm)
   /// Point the positions give: contact or tool reference; APT and G-code always write the tool
   /// reference (the CL point / programmed point). Default Contact.
-  io::ClPointKind point = io::ClPointKind::Contact;
+  planning::ClPointKind point = planning::ClPointKind::Contact;
   PathExportGrouping grouping = PathExportGrouping::OneFile;  ///< files (default one)
   std::vector<int> paths;  ///< indices into Project::paths to write, ascending (default none)
   QString filePath;        ///< the file (OneFile) or the base of the region files
@@ -97,8 +97,8 @@ PathExportOptions normalisedExportOptions(PathExportOptions options);
 QString pathExportProblem(const planning::Project& project, const PathExportOptions& options);
 
 /// @brief Writes the chosen paths of @p project as @p options say (programs from
-/// io::programsForExport, files by io::writePathFile): one file at options.filePath when there
-/// is one program, else one per program named as io::toolPathCsvFileFor() names them
+/// planning::programsForExport, files by io::writePathFile): one file at options.filePath when
+/// there is one program, else one per program named as io::toolPathCsvFileFor() names them
 /// ("<stem>_<program name>.<ext>"; a project whose chosen paths use several tools gives one
 /// program per tool even in one file mode).
 /// @return the files written, in order.

@@ -4,8 +4,8 @@
 #pragma once
 
 #include <ddfcam/ddf/support_mesh.h>
-#include <ddfcam/io/programs/cl_program.h>
-#include <ddfcam/io/programs/imported_path.h>
+#include <ddfcam/planning/placement/cl_program.h>
+#include <ddfcam/planning/placement/imported_path.h>
 #include <ddfcam/planning/tools/tool.h>
 
 #include <QDialog>
@@ -35,7 +35,7 @@ struct WorkbenchDialogs;
 struct PathImportOptions {
   /// Unit the file's numbers are really in; the dialog starts with the unit the reader found
   /// (default mm).
-  io::LengthUnit unit = io::LengthUnit::Millimetre;
+  LengthUnit unit = LengthUnit::Millimetre;
   ddf::Vec3 translationMm = ddf::Vec3::Zero();  ///< program -> part translation, mm (default 0)
   /// Rotation program -> part, degrees, about the fixed x, y, z axes in that order
   /// (R = Rz * Ry * Rx), applied before the translation (default 0).
@@ -47,16 +47,16 @@ struct PathImportOptions {
   QString name;                ///< path name; empty: the program's part name or the file's
   /// What the file's vectors are (tool axis, approach direction, surface normal) (default
   /// Auto: decided from the part).
-  io::PathVectorMeaning vectors = io::PathVectorMeaning::Auto;
+  planning::PathVectorMeaning vectors = planning::PathVectorMeaning::Auto;
   /// What the file's points are (contacts or tool reference points) (default Auto).
-  io::PathPointMeaning points = io::PathPointMeaning::Auto;
+  planning::PathPointMeaning points = planning::PathPointMeaning::Auto;
 };
 
 /// @brief What the import dialog shows: the file, the program read from it and the project.
 struct PathImportRequest {
-  QString file;                      ///< the file read
-  const io::ClProgram& program;      ///< as read (positions in mm per program.sourceUnit)
-  const planning::Project& project;  ///< offers its tools
+  QString file;                        ///< the file read
+  const planning::ClProgram& program;  ///< as read (positions in mm per program.sourceUnit)
+  const planning::Project& project;    ///< offers its tools
 };
 
 /// @brief Suffixes (no dot, lower case) of the readable path formats: io::pathFileExtensions()
@@ -79,8 +79,8 @@ Eigen::Isometry3d importTransform(const PathImportOptions& options);
 PathImportOptions initialImportOptions(const PathImportRequest& request);
 
 /// @brief Reads @p file (io::readPathFile), asks @p dialogs.importPath for the placement,
-/// places the program on the part (io::placeProgram) and pushes one AddPathCommand (with a new
-/// tool if the options ask for one). Reader and placement warnings go to @p console. Errors
+/// places the program on the part (planning::placeProgram) and pushes one AddPathCommand (with a
+/// new tool if the options ask for one). Reader and placement warnings go to @p console. Errors
 /// (unreadable file, no part, placement refused) go to dialogs.error once.
 /// @return true if a path was added; false if cancelled or failed.
 bool importPathFile(const QString& file, Document& document, const WorkbenchDialogs& dialogs,

@@ -6,9 +6,6 @@
 
 #include <QWidget>
 
-#include <map>
-#include <string>
-
 class QLabel;
 class QTableWidget;
 
@@ -25,7 +22,8 @@ struct PathLengths {
 PathLengths pathLengths(const planning::ToolPath& path);
 
 /// @brief A table of the project's paths (name, lines, cutting length mm, idle length mm: the
-/// linking report's if set, else the straight gaps between passes) with
+/// path's linked idle length (ToolPath::linkedIdleMm, marked "linked") if set, else the
+/// straight gaps between passes) with
 /// a total line below (path count, lines, cutting and idle length). One row per path, in
 /// project order; the selected row picks the path other tools act on.
 class PathListWidget : public QWidget {
@@ -36,10 +34,6 @@ class PathListWidget : public QWidget {
   /// @brief Rebuilds the rows from @p project; selects the last path when paths were added or
   /// the selected row is gone, else keeps the selection.
   void refresh(const planning::Project& project);
-  /// @brief Idle lengths reported by the linking of paths (planning::LinkedPaths::idleLengthMm,
-  /// lifted links included), by path name, mm; they replace the straight gaps of those paths
-  /// in the idle column (marked "linked") from the next refresh on.
-  void setLinkedIdle(std::map<std::string, double> idleMm) { linkedIdle_ = std::move(idleMm); }
   /// @brief Index of the selected path, -1 if none.
   int selectedPath() const;
   /// @brief Selects path @p index (-1: none).
@@ -55,7 +49,6 @@ class PathListWidget : public QWidget {
  private:
   QTableWidget* table_ = nullptr;
   QLabel* total_ = nullptr;
-  std::map<std::string, double> linkedIdle_;
 };
 
 }  // namespace ddfcam::gui

@@ -66,6 +66,12 @@ class ErrorMapPanel : public Panel {
   bool computeScallopTable();
   /// @brief Rows of the last scallop table.
   const std::vector<planning::ScallopRow>& scallopRows() const { return scallopRows_; }
+  /// @brief How the scallop table simulates its cases (passes, raster, tool mesh) from the next
+  /// computeScallopTable() on; default planning::ScallopSimulationParams{}, whose fine tool
+  /// meshes take about a minute on two cores. Its progress callback is replaced by the job's.
+  void setScallopSimulation(const planning::ScallopSimulationParams& params) {
+    scallopSimulation_ = params;
+  }
   /// @brief The cases of the scallop table: ball on a plane and on a convex cylinder, a flat
   /// wheel on a convex cylinder, a tilted flat end on a plane.
   static std::vector<planning::ScallopCase> defaultScallopCases();
@@ -94,6 +100,7 @@ class ErrorMapPanel : public Panel {
   std::optional<planning::Coverage> coverage_;
   std::optional<planning::CrustClamping> clamping_;
   std::vector<planning::ScallopRow> scallopRows_;
+  planning::ScallopSimulationParams scallopSimulation_;
 };
 
 }  // namespace ddfcam::gui

@@ -23,7 +23,9 @@ enum class RemovalModel {
 /// Swept volume), "vConvexityCheck", "collisionCheck", "removalModelCombo" (Rigid / Preston),
 /// "prestonCoefficientSpin" (K_p in units of 1e-7 mm^2/N), "prestonForceSpin" (N),
 /// "prestonSpeedSpin" (wheel surface speed, m/s), "prestonFeedSpin" (feed, mm/min). The Preston
-/// fields are enabled only for the Preston model.
+/// fields are enabled only for the Preston model. The feed is not an option of its own: the
+/// owner shows the selected path's ToolPath::feedMmPerMin in it (showFeed) and stores an edit
+/// in the path (feedEdited), so the simulation and exported programs use one feed.
 class SimulationOptions : public QWidget {
   Q_OBJECT
 
@@ -32,19 +34,25 @@ class SimulationOptions : public QWidget {
 
   /// @brief Mode and checks of the rigid model (depth buffer defaults).
   planning::GrindingSimulationParams grindingParams() const;
-  /// @brief Preston parameters converted to mm, N, s (progress and normals left empty).
+  /// @brief Preston parameters converted to mm, N, s (progress and normals left empty; the feed
+  /// is the one shown, which the owner keeps equal to the selected path's).
   planning::PrestonParams prestonParams() const;
   RemovalModel removalModel() const;
 
   void setSweepMode(planning::SweepMode mode);
   void setRemovalModel(RemovalModel model);
   void setChecks(bool vConvexity, bool collisions);
-  /// @brief Sets the Preston fields: K_p in mm^2/N, F in N, v_s in m/s, feed in mm/min.
+  /// @brief Sets the Preston fields: K_p in mm^2/N, F in N, v_s in m/s, feed in mm/min (as if
+  /// typed: a changed feed emits feedEdited).
   void setPreston(double coefficientMm2PerN, double forceN, double speedMPerS, double feedMmPerMin);
+  /// @brief Shows @p feedMmPerMin (the selected path's feed) without emitting feedEdited.
+  void showFeed(double feedMmPerMin);
 
  signals:
   /// @brief Any option changed.
   void changed();
+  /// @brief The user set the feed to @p feedMmPerMin (mm/min), for the selected path.
+  void feedEdited(double feedMmPerMin);
 
  private:
   void updateEnabled();

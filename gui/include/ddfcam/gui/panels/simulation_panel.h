@@ -54,6 +54,10 @@ class SimulationPanel : public Panel {
   /// (planning::correctPathPenetrations with @p gridSize and @p every) as a job, committed as one
   /// ReplacePathCommand; "correctionLabel" shows the lifts. @return true if started.
   bool correctPenetrations(int index, int gridSize = 50, int every = 1);
+  /// @brief Sets the feed of path @p index (ToolPath::feedMmPerMin, mm/min), as an edit of the
+  /// options' feed does for the selected path: one ReplacePathCommand. The Preston model and
+  /// exported programs both use this feed. @return true if the feed changed.
+  bool setPathFeed(int index, double feedMmPerMin);
   /// @brief Mode, checks and removal model used by Simulate and the playback.
   SimulationOptions& options() const { return *options_; }
   /// @brief The playback controls (play, pause, step, speed, apply, cancel) of the selected
@@ -63,6 +67,8 @@ class SimulationPanel : public Panel {
  private:
   void refresh();
   void showToolOfSelectedPath();
+  /// Shows the selected path's feed in the options (the Preston feed is the path's).
+  void showFeedOfSelectedPath();
   void applyOptions();
   QWidget* makeWorkpieceGroup();
   QWidget* makeCorrectionGroup();

@@ -16,7 +16,6 @@
 #include <cstdint>
 
 #include <functional>
-#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -63,17 +62,19 @@ struct FieldChoice {
 /// each stroke and "Clear strokes" one SetRegionsCommand); on the whole part they belong to
 /// the panel. Lines of a family or cover are ordered and oriented by
 /// planning::linkStreamlines (zig-zag or one direction) when "link" is on. Each seeding adds
-/// one path (one undo step). The smoothing slider previews planning::smoothMovingAverage of
-/// the selected path's raw lines live (overlay kPreviewOverlay, no undo step); "Apply"
-/// replaces the path by the smoothed lines put back on the surface (one undo step); "Fair"
-/// replaces it by planning::fairStreamline of the raw lines (a job, one undo step). The "Tool
-/// placement" group sets lead and tilt (planning::PlacementParams) and, with "sample from
-/// tolerance", resamples the lines along the feed at the tolerance-derived step (or an
-/// override; planning::placeAlongPath) whenever the panel creates or replaces a path; a label
-/// shows the step and binding rule of the last created path. The path
-/// list shows every path's line count, cutting and idle length and a total. Fields and
-/// tracing run as cancellable jobs; the field is kept until the part, its heights or the
-/// choices change.
+/// one path (one undo step) that keeps the lines as traced and its linking's idle length
+/// (ToolPath::rawLines, linkedIdleMm: saved, undone and renamed with the path, and carried
+/// over when the path is smoothed or faired). The smoothing slider previews
+/// planning::smoothMovingAverage of the selected path's raw lines live (overlay
+/// kPreviewOverlay, no undo step); "Apply" replaces the path by the smoothed lines put back
+/// on the surface (one undo step); "Fair" replaces it by planning::fairStreamline of the raw
+/// lines (a job, one undo step). The "Tool placement" group sets lead and tilt
+/// (planning::PlacementParams) and, with "sample from tolerance", resamples the lines along
+/// the feed at the tolerance-derived step (or an override; planning::placeAlongPath) whenever
+/// the panel creates or replaces a path; a label shows the step and binding rule of the last
+/// created path. The path list shows every path's line count, cutting and idle length and a
+/// total. Fields and tracing run as cancellable jobs; the field is kept until the part, its
+/// heights or the choices change.
 class StreamlinesPanel : public Panel {
   Q_OBJECT
 
@@ -241,10 +242,6 @@ class StreamlinesPanel : public Panel {
   std::optional<ddf::SurfaceLocation> lastPick_;
   /// Counts changes of the part or its heights: a job's result for an older state is dropped.
   std::uint64_t generation_ = 0;
-  /// Raw (unsmoothed) lines of the paths this panel made, by path name.
-  std::map<std::string, std::vector<planning::Streamline>> rawLines_;
-  /// Idle length of the linking of the paths this panel linked, by path name, mm.
-  std::map<std::string, double> linkedIdle_;
 };
 
 /// The line fields the paths follow, for one state of the part's heights.

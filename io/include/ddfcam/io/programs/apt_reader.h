@@ -2,7 +2,7 @@
 // ddfcam: APT/CLDATA source input as real CAM systems write it (NX CLSF, Pro/CLfile, ...).
 #pragma once
 
-#include <ddfcam/io/programs/cl_program.h>
+#include <ddfcam/planning/placement/cl_program.h>
 
 #include <filesystem>
 #include <string>
@@ -36,11 +36,11 @@ struct AptReadParams {
 /// mm/min after the unit conversion, negative feeds, a CIRCLE of radius > 1e6 mm, an arc needing
 /// more than 1e6 chords or arcs adding more than 1e6 points to one program (use a coarser
 /// chord tolerance); InvalidInput for a bad chord tolerance.
-ClProgram decodeApt(std::string_view text, const std::string& sourceName,
-                    const AptReadParams& params = {});
+planning::ClProgram decodeApt(std::string_view text, const std::string& sourceName,
+                              const AptReadParams& params = {});
 
 /// @brief decodeApt() of the file at @p path (files over 1 GiB are refused).
 /// @throws IoError as decodeApt(), and if the file is missing, unreadable or too large.
-ClProgram readApt(const std::filesystem::path& path, const AptReadParams& params = {});
+planning::ClProgram readApt(const std::filesystem::path& path, const AptReadParams& params = {});
 
 }  // namespace ddfcam::io

@@ -2,7 +2,7 @@
 // ddfcam: APT/CLDATA source output (PARTNO ... GOTO ... FINI) for NC post-processors.
 #pragma once
 
-#include <ddfcam/io/programs/cl_program.h>
+#include <ddfcam/planning/placement/cl_program.h>
 #include <ddfcam/planning/tools/tool.h>
 
 #include <filesystem>
@@ -24,17 +24,6 @@ struct AptWriteParams {
   int maxColumns = 72;
 };
 
-/// @brief The 7-parameter APT cutter CUTTER/d,r,e,f,alpha,beta,h of @p tool (mm, degrees),
-/// with d = 2 R, r the corner radius, e = R - r, f = r, alpha = beta = 0:
-/// - BallEnd: r = R (e = 0, f = R), h = flute length (width);
-/// - FlatEnd: r = 0 (e = R, f = 0), h = width;
-/// - TorusCutter: r = corner (edgeRadiusMm), e = R - r, f = r, h = width;
-/// - Sphere: a ball, r = R, e = 0, f = R, h = 2 R (note: its reference point is the centre);
-/// - CylinderRoll, BeltContactWheel: the wheel as a disc cutter, r = rim radius
-///   (edgeRadiusMm), e = R - r, f = r, h = width (its axis is tool +x, not the APT +z).
-/// @throws InvalidInput if the tool fails planning::validateTool().
-ClCutter aptCutter(const planning::Tool& tool);
-
 /// @brief The APT source text of @p program, lines ending in "\n": PARTNO (no slash; an empty
 /// name gives DDFCAM; '$' and control characters become '_'), UNITS, program.comments as "$$"
 /// lines (split at line ends and at the column limit), CUTTER (if program.cutter), LOADTL,
@@ -47,11 +36,11 @@ ClCutter aptCutter(const planning::Tool& tool);
 /// @throws InvalidInput for a Contact program (APT needs tool reference points), decimals or
 /// columns out of range, a Metre unit, non-finite positions, feeds or cutter values or ones
 /// of 1e9 file units or more, or a non-unit or non-finite axis (|1 - |a|| > 1e-6).
-std::string encodeApt(const ClProgram& program, const AptWriteParams& params = {});
+std::string encodeApt(const planning::ClProgram& program, const AptWriteParams& params = {});
 
 /// @brief Writes encodeApt(program, params) to @p path atomically (temporary file + rename).
 /// @throws InvalidInput as encodeApt(); IoError if the file cannot be written.
-void writeApt(const ClProgram& program, const std::filesystem::path& path,
+void writeApt(const planning::ClProgram& program, const std::filesystem::path& path,
               const AptWriteParams& params = {});
 
 }  // namespace ddfcam::io

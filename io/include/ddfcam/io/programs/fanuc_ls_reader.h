@@ -2,7 +2,7 @@
 // ddfcam: reading FANUC teach-pendant programs in their ASCII form (.ls).
 #pragma once
 
-#include <ddfcam/io/programs/cl_program.h>
+#include <ddfcam/planning/placement/cl_program.h>
 
 #include <filesystem>
 #include <string>
@@ -35,10 +35,10 @@ namespace ddfcam::io {
 /// angles, a /POS entry is malformed, duplicated or lacks one of X Y Z W P R, a coordinate is
 /// beyond +-1e12 mm or a speed beyond 1e12 mm/min after conversion; and
 /// "<sourceName>: ..." when there is no /MN section or no motion at all.
-ClProgram decodeFanucLs(std::string_view text, const std::string& sourceName);
+planning::ClProgram decodeFanucLs(std::string_view text, const std::string& sourceName);
 
 /// @brief Reads a FANUC .ls file (see decodeFanucLs).
 /// @throws IoError if the file is missing, unreadable, larger than 1 GiB, or as decodeFanucLs.
-ClProgram readFanucLs(const std::filesystem::path& file);
+planning::ClProgram readFanucLs(const std::filesystem::path& file);
 
 }  // namespace ddfcam::io

@@ -2,7 +2,7 @@
 // ddfcam: RS274NGC G-code output of a cutter-location program, 3-axis or 5-axis table-table.
 #pragma once
 
-#include <ddfcam/io/programs/cl_program.h>
+#include <ddfcam/planning/placement/cl_program.h>
 #include <ddfcam/planning/placement/machine_kinematics.h>
 #include <ddfcam/planning/tools/tool.h>
 
@@ -80,12 +80,12 @@ struct GCodeWriteParams {
 /// non-finite value, a missing or non-unit normal of a contact point or one pointing away from
 /// the tool side (n . a < 0), a tilted axis in ThreeAxis mode, or an axis the machine cannot
 /// reach; messages name the point (index, path, source line).
-std::string encodeGCode(const ClProgram& program, const planning::Tool& tool,
+std::string encodeGCode(const planning::ClProgram& program, const planning::Tool& tool,
                         const GCodeWriteParams& params = {});
 
 /// @brief Writes encodeGCode() to @p path atomically (temporary file + rename).
 /// @throws InvalidInput as encodeGCode(); IoError if the file cannot be written.
-void writeGCode(const std::filesystem::path& path, const ClProgram& program,
+void writeGCode(const std::filesystem::path& path, const planning::ClProgram& program,
                 const planning::Tool& tool, const GCodeWriteParams& params = {});
 
 }  // namespace ddfcam::io

@@ -4,9 +4,9 @@
 
 #include <ddfcam/io/programs/apt_reader.h>
 #include <ddfcam/io/programs/apt_writer.h>
-#include <ddfcam/io/programs/cl_program.h>
 #include <ddfcam/io/programs/gcode_writer.h>
 #include <ddfcam/io/programs/tool_path_csv.h>
+#include <ddfcam/planning/placement/cl_program.h>
 #include <ddfcam/planning/tools/tool.h>
 
 #include <filesystem>
@@ -58,14 +58,21 @@ struct PathReadParams {
   AptReadParams apt;  ///< for APT/CLDATA files (default: see AptReadParams)
 };
 
+/// @brief A tool-path file as readPathFile() read it.
+struct PathFile {
+  planning::ClProgram program;          ///< the program, positions in mm
+  PathFormat format = PathFormat::Csv;  ///< the format detected and read (never GCode)
+};
+
 /// @brief Reads a tool-path file of any readable format (detectPathFormat() on its extension
 /// and first 4 KiB): readToolPathCsv(), readApt(), readRosToolpathYaml() or readFanucLs().
-/// Positions of the result are in mm.
+/// Positions of the program are in mm; the format is the one detected, so callers need not
+/// detect it again.
 /// @throws IoError if the file is missing or unreadable; "<file>: not a tool-path file
 /// (expected CSV, APT/CLDATA, ROS toolpath YAML or FANUC .ls)" when no format matches (other
 /// YAML, XML, meshes, text); "<file>: G-code cannot be read ..." for G-code; and as the reader
 /// of the format.
-ClProgram readPathFile(const std::filesystem::path& file, const PathReadParams& params = {});
+PathFile readPathFile(const std::filesystem::path& file, const PathReadParams& params = {});
 
 /// @brief Options of writePathFile(): the format and the options of each writable format.
 struct PathWriteParams {
@@ -76,12 +83,12 @@ struct PathWriteParams {
 };
 
 /// @brief Writes @p program to @p file in params.format, atomically: writeToolPathCsv(),
-/// writeApt() (with CUTTER = program.cutter, or aptCutter(@p tool) when the program has none)
-/// or writeGCode() (which needs @p tool, a cutter). The extension of @p file is not changed.
+/// writeApt() (with CUTTER = program.cutter, or planning::aptCutter(@p tool) when the program has
+/// none) or writeGCode() (which needs @p tool, a cutter). The extension of @p file is not changed.
 /// @param tool the tool of the program; unused for CSV.
 /// @throws InvalidInput for a format that cannot be written (RosYaml, FanucLs) and as the
 /// writer of the format; IoError if the file cannot be written.
-void writePathFile(const ClProgram& program, const planning::Tool& tool,
+void writePathFile(const planning::ClProgram& program, const planning::Tool& tool,
                    const std::filesystem::path& file, const PathWriteParams& params);
 
 }  // namespace ddfcam::io

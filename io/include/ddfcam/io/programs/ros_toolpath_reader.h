@@ -2,7 +2,7 @@
 // ddfcam: reading ROS-Industrial tool paths saved as YAML (paths of geometry_msgs poses).
 #pragma once
 
-#include <ddfcam/io/programs/cl_program.h>
+#include <ddfcam/planning/placement/cl_program.h>
 
 #include <filesystem>
 #include <string>
@@ -33,12 +33,12 @@ namespace ddfcam::io {
 /// `paths`/`poses`/`position`/`orientation` or coordinate, a non-number, a zero quaternion, a
 /// coordinate beyond +-1e12 mm after the conversion from metres,
 /// and "<sourceName>: ..." for a document without any pose.
-ClProgram decodeRosToolpathYaml(std::string_view text, const std::string& sourceName);
+planning::ClProgram decodeRosToolpathYaml(std::string_view text, const std::string& sourceName);
 
 /// @brief Reads a ROS toolpath YAML file (see decodeRosToolpathYaml). The program's partName
 /// is the file's stem.
 /// @throws IoError if the file is missing, unreadable, larger than 1 GiB, or as
 /// decodeRosToolpathYaml.
-ClProgram readRosToolpathYaml(const std::filesystem::path& file);
+planning::ClProgram readRosToolpathYaml(const std::filesystem::path& file);
 
 }  // namespace ddfcam::io

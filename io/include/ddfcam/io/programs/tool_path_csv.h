@@ -3,8 +3,8 @@
 // spreadsheets; reads the common x,y,z[,i,j,k] variants too. Format: docs/tool_path_csv.md.
 #pragma once
 
-#include <ddfcam/io/programs/cl_program.h>
-#include <ddfcam/io/programs/cl_program_builder.h>
+#include <ddfcam/planning/placement/cl_program.h>
+#include <ddfcam/planning/placement/cl_program_builder.h>
 
 #include <cstddef>
 #include <filesystem>
@@ -31,7 +31,7 @@ struct CsvReadParams {
   /// Metre for robot paths (default mm).
   LengthUnit unitIfUnstated = LengthUnit::Millimetre;
   /// Meaning of the positions when the file does not say (default tool reference point).
-  ClPointKind kindIfUnstated = ClPointKind::ToolReference;
+  planning::ClPointKind kindIfUnstated = planning::ClPointKind::ToolReference;
   /// More data rows than this are refused with an IoError (default kMaxCsvRows, 50 million).
   std::size_t maxRows = kMaxCsvRows;
 };
@@ -39,7 +39,7 @@ struct CsvReadParams {
 /// @brief The header line (without line end): "path,point,P_x_U,P_y_U,P_z_U,axis_i,axis_j,
 /// axis_k,normal_x,normal_y,normal_z,feed_U_per_min,move" with P = "contact" or "tool" and
 /// U = unitSymbol(@p unit) ("mm", "in", "m").
-std::string toolPathCsvHeader(ClPointKind kind, LengthUnit unit = LengthUnit::Millimetre);
+std::string toolPathCsvHeader(planning::ClPointKind kind, LengthUnit unit = LengthUnit::Millimetre);
 
 /// @brief The CSV text of @p program: the header, then one line per point, each ending in
 /// "\n". Integers in decimal, reals in fixed notation with params.decimals digits and a '.'
@@ -49,11 +49,12 @@ std::string toolPathCsvHeader(ClPointKind kind, LengthUnit unit = LengthUnit::Mi
 /// comments, warnings) is not written.
 /// @throws InvalidInput if params.decimals is outside 0..17 or a value is not finite (naming
 /// the point).
-std::string encodeToolPathCsv(const ClProgram& program, const CsvWriteParams& params = {});
+std::string encodeToolPathCsv(const planning::ClProgram& program,
+                              const CsvWriteParams& params = {});
 
 /// @brief Writes encodeToolPathCsv() to @p file atomically (temporary file + rename).
 /// @throws InvalidInput as encodeToolPathCsv(). @throws IoError if the file cannot be written.
-void writeToolPathCsv(const ClProgram& program, const std::filesystem::path& file,
+void writeToolPathCsv(const planning::ClProgram& program, const std::filesystem::path& file,
                       const CsvWriteParams& params = {});
 
 /// @brief File name @p base would get for a program named @p name in writeToolPathCsvFiles():
@@ -69,9 +70,9 @@ std::filesystem::path toolPathCsvFileFor(const std::filesystem::path& base,
 /// @return the written files, in the order of @p programs.
 /// @throws InvalidInput if @p programs is empty, as encodeToolPathCsv(); IoError as
 /// writeToolPathCsv().
-std::vector<std::filesystem::path> writeToolPathCsvFiles(const std::vector<NamedProgram>& programs,
-                                                         const std::filesystem::path& base,
-                                                         const CsvWriteParams& params = {});
+std::vector<std::filesystem::path> writeToolPathCsvFiles(
+    const std::vector<planning::NamedProgram>& programs, const std::filesystem::path& base,
+    const CsvWriteParams& params = {});
 
 /// @brief Parses a ddfcam tool-path CSV (units and point kind from its header) or a common
 /// variant: columns x,y,z / x,y,z,i,j,k / path,x,y,z[,i,j,k] with or without a header line
@@ -87,12 +88,13 @@ std::vector<std::filesystem::path> writeToolPathCsvFiles(const std::vector<Named
 /// index, a negative feed, a position beyond +-1e12 mm or a feed beyond 1e12 mm/min after the
 /// unit conversion; or "<sourceName>: ..." for text with no data row recognised as such, binary
 /// content, or more than params.maxRows rows.
-ClProgram decodeToolPathCsv(std::string_view text, const std::string& sourceName,
-                            const CsvReadParams& params = {});
+planning::ClProgram decodeToolPathCsv(std::string_view text, const std::string& sourceName,
+                                      const CsvReadParams& params = {});
 
 /// @brief Reads @p file as decodeToolPathCsv().
 /// @throws IoError if the file is missing, unreadable or larger than 1 GiB, or as
 /// decodeToolPathCsv().
-ClProgram readToolPathCsv(const std::filesystem::path& file, const CsvReadParams& params = {});
+planning::ClProgram readToolPathCsv(const std::filesystem::path& file,
+                                    const CsvReadParams& params = {});
 
 }  // namespace ddfcam::io

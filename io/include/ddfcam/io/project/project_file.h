@@ -69,12 +69,21 @@ struct ProjectReadReport {
 /// | tag | count | payload |
 /// |---|---|---|
 /// | "prov" | 0..1 | where the part came from, below |
+/// | "line" | per planned path | the raw lines and linking of a path, below |
 ///
 /// "prov": i32 source unit (0 mm, 1 cm, 2 m, 3 in), u64 N, N strings (the CAD face names),
 /// u64 F, F i32 (per support face of the part its CAD face, -1 or < N; F is 0 or the part's
 /// face count). It is written only for a part read in a unit other than mm or with CAD faces, so
 /// other projects are saved as before; without it a project loads with sourceUnit mm and no CAD
 /// faces. A reader ignores bytes after the members it knows (later members extend it).
+///
+/// "line": i32 path index (position among the "PATH" chunks, which come before it), u8
+/// hasLinkedIdle 0/1, f64 linkedIdleMm (0 when not linked), u64 L raw lines, then per line i32
+/// stop, i32 backwardStop (Streamline::StopReason values), u64 seedIndex, f64 lengthMm, u64 P
+/// points, P x (i32 support face, 3 f64 bary, f64 h, 3 f64 point mm). It is written only for a
+/// path with raw lines or a linked idle length (ToolPath::rawLines, linkedIdleMm), so other
+/// projects are saved as before; without it a path loads with neither. A reader ignores bytes
+/// after the members it knows.
 ///
 /// The S i32 of a path are its passStarts, the feed is feedMmPerMin (mm/min), kind is the
 /// ToolKind value.

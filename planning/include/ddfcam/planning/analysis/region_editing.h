@@ -4,15 +4,13 @@
 
 #include <ddfcam/ddf/displacement_field.h>
 #include <ddfcam/planning/model/project.h>
+#include <ddfcam/planning/surface/uniform_grid.h>
 
 #include <Eigen/Core>
 
 #include <array>
-#include <cstdint>
 #include <span>
 #include <string>
-#include <unordered_map>
-#include <utility>
 #include <vector>
 
 namespace ddfcam::planning {
@@ -98,7 +96,7 @@ std::vector<FaceFrame> faceFrames(const ddf::DisplacementField& ddf);
 /// 2D frame, e.g. widget pixels). Fewer than three vertices contain nothing.
 bool pointInPolygon(const Eigen::Vector2d& point, std::span<const Eigen::Vector2d> polygon);
 
-/// @brief A uniform grid over the raster surface points of a DDF, for brush queries: each
+/// @brief A UniformGrid over the raster surface points of a DDF, for brush queries: each
 /// query visits only the grid cells that the ball touches. Build once per part state (heights
 /// included); O(points) to build.
 class SurfacePointGrid {
@@ -113,19 +111,13 @@ class SurfacePointGrid {
   std::vector<int> facesWithinDistance(const ddf::Vec3& point, double radiusMm) const;
 
   /// @brief Grid cell edge in use, mm.
-  double cellSizeMm() const { return cellSize_; }
+  double cellSizeMm() const { return grid_.cellMm(); }
 
  private:
-  std::int64_t key(int x, int y, int z) const;
-  std::array<int, 3> cellOf(const ddf::Vec3& p) const;
-
-  double cellSize_ = 1.0;
-  ddf::Vec3 origin_ = ddf::Vec3::Zero();
-  std::array<int, 3> dims_ = {1, 1, 1};  ///< cells along x, y, z
   int faceCount_ = 0;
-  std::vector<ddf::Vec3> points_;                                ///< sorted by cell
-  std::vector<int> pointFace_;                                   ///< face of points_[i]
-  std::unordered_map<std::int64_t, std::pair<int, int>> cells_;  ///< key -> [begin, end)
+  std::vector<ddf::Vec3> points_;  ///< raster surface points, face by face
+  std::vector<int> pointFace_;     ///< face of points_[i]
+  UniformGrid grid_{1.0};          ///< indices into points_
 };
 
 /// @brief One-off brush query: SurfacePointGrid(ddf).facesWithinDistance(point, radiusMm).

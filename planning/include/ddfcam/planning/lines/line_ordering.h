@@ -12,7 +12,8 @@ namespace ddfcam::planning {
 
 /// @brief Removes repeated points (a trace that stalls at a boundary) and fold-backs onto the
 /// point before (A B A) from @p line: both leave no feed direction for a tool's pose. Points
-/// closer than 1e-6 mm count as repeated; seedIndex is clamped to the points left.
+/// closer than 1e-6 mm count as repeated; seedIndex follows the seed point, or the point kept
+/// in its place.
 void dropRepeatedPoints(Streamline& line);
 
 /// @brief @p line run backwards: points reversed, the two stop reasons swapped, seedIndex

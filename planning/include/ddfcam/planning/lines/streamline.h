@@ -67,6 +67,8 @@ struct Streamline {
 
   /// @brief The 3D points (#points, mm, part frame).
   std::vector<ddf::Vec3> polyline() const;
+
+  bool operator==(const Streamline&) const = default;
 };
 
 /// @brief The streamline of line field @p field through @p seed, traced in both directions

@@ -68,9 +68,11 @@ struct Project {
 /// @brief Checks the invariants a Project must hold before it is saved or shown: every
 /// field and state has F * pointsPerFace values; region faces are ascending, unique and in
 /// range; every path's tool index is valid and its passStarts are strictly ascending, in range
-/// and start with 0 when the path has poses; every tool passes validateTool(); the design
-/// mesh's triangles reference existing vertices; fields, states or regions without a part are
-/// an error; the mould study, if any, passes validateMouldStudy() (it needs no part).
+/// and start with 0 when the path has poses, its raw lines have finite coordinates on faces of
+/// the part (checked when there is a part) and its linked idle length is finite and >= 0; every
+/// tool passes validateTool(); the design mesh's triangles reference existing vertices;
+/// fields, states or regions without a part are an error; the mould study, if any, passes
+/// validateMouldStudy() (it needs no part).
 /// @throws InvalidInput naming the first offending item (e.g. "field 'height': 12 values,
 /// expected 1536").
 void validateProject(const Project& project);
