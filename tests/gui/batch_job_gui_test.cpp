@@ -2,6 +2,7 @@
 // Acceptance of the batch pipeline under Xvfb: `ddfcam-cli run job.json` and the same steps
 // through the workbench panels (segmentation, streamlines with placement, stock allowance,
 // simulation, error map) give the same paths, states and error map.
+#include "gui_test_registry.h"
 #include "workbench_test.h"
 
 #include <ddfcam/ddf/analytic_generators.h>
@@ -270,5 +271,5 @@ void BatchJobGuiTest::screenshotShowsTheErrorMap() {
   QVERIFY2(percent > 5.0, qPrintable(QString::number(percent)));
 }
 
-QTEST_MAIN(BatchJobGuiTest)
+DDFCAM_GUI_TEST_MAIN(BatchJobGuiTest)
 #include "batch_job_gui_test.moc"

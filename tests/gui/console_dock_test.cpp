@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The Console dock: messages logged from other threads arrive in order, lines are limited,
 // and a dock that is gone drops late messages instead of crashing.
+#include "gui_test_registry.h"
 #include <ddfcam/gui/console_dock.h>
 #include <ddfcam/log.h>
 
@@ -186,5 +187,5 @@ void ConsoleDockTest::deletionWhileThreadsLogDoesNotCrash() {
   QCoreApplication::processEvents();
 }
 
-QTEST_MAIN(ConsoleDockTest)
+DDFCAM_GUI_TEST_MAIN(ConsoleDockTest)
 #include "console_dock_test.moc"

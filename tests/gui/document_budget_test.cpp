@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Document undo budget: dropping the oldest steps, keeping the saved state reachable, rebuilds.
+#include "gui_test_registry.h"
 #include "document_fixture.h"
 
 #include <ddfcam/gui/document.h>
@@ -181,5 +182,5 @@ void DocumentBudgetTest::budgetRebuildDoesNotRedoAgain() {
   QCOMPARE(fields[0].values.front(), 12.0f);
 }
 
-QTEST_MAIN(DocumentBudgetTest)
+DDFCAM_GUI_TEST_MAIN(DocumentBudgetTest)
 #include "document_budget_test.moc"

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Document and its commands: exact undo/redo round trips, refusals and the modified flag.
+#include "gui_test_registry.h"
 #include "document_fixture.h"
 
 #include <ddfcam/ddf/analytic_generators.h>
@@ -267,5 +268,5 @@ void DocumentTest::markModifiedSurvivesUndo() {
   QVERIFY(!document.isModified());
 }
 
-QTEST_MAIN(DocumentTest)
+DDFCAM_GUI_TEST_MAIN(DocumentTest)
 #include "document_test.moc"

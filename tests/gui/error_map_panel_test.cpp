@@ -3,6 +3,7 @@
 // state: the groove is overcut by the infeed, the colours the view draws agree with the
 // area statistics, band edits recolour, the deviation along a pass follows the groove, undo,
 // and the scallop table against the ball-on-plane formula.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "workbench_test.h"
 
@@ -264,5 +265,5 @@ void ErrorMapPanelTest::coverageAndClampingShowBesideTheStatistics() {
   QVERIFY2(label->text().contains("min is only a bound"), qPrintable(label->text()));
 }
 
-QTEST_MAIN(ErrorMapPanelTest)
+DDFCAM_GUI_TEST_MAIN(ErrorMapPanelTest)
 #include "error_map_panel_test.moc"

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // JobRunner and its status-bar widget: commit on the UI thread, prompt cancel, one error report.
+#include "gui_test_registry.h"
 #include <ddfcam/error.h>
 #include <ddfcam/gui/job_progress_widget.h>
 #include <ddfcam/gui/job_runner.h>
@@ -264,5 +265,5 @@ void JobRunnerTest::widgetReportsDoneAndFailed() {
   QVERIFY(widget->isHidden());
 }
 
-QTEST_MAIN(JobRunnerTest)
+DDFCAM_GUI_TEST_MAIN(JobRunnerTest)
 #include "job_runner_test.moc"

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The workbench window under Xvfb, checked the way a person would look at it: the start-up
 // part, the view, opening files through the menu (a job), bad files, screenshots, drops.
+#include "gui_test_registry.h"
 #include "../support/conversion_meshes.h"
 #include "frame_checks.h"
 #include "workbench_fixture.h"
@@ -325,5 +326,5 @@ void MainWindowTest::dockLayoutSurvivesRestart() {
   QVERIFY(!f_.window->findChild<QDockWidget*>("panel_fields")->isHidden());
 }
 
-QTEST_MAIN(MainWindowTest)
+DDFCAM_GUI_TEST_MAIN(MainWindowTest)
 #include "main_window_test.moc"

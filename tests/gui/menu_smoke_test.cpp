@@ -2,6 +2,7 @@
 // Smoke test under Xvfb: every action of the main menu, in menu order, on the demo session,
 // with every dialog answered "cancel" or a scratch file. Nothing may crash or leave a job
 // hanging; errors must come as reported messages.
+#include "gui_test_registry.h"
 #include "workbench_fixture.h"
 
 #include <ddfcam/gui/app_setup.h>
@@ -81,5 +82,5 @@ void MenuSmokeTest::walksEveryMenuAction() {
   QVERIFY(!f.window->isVisible());
 }
 
-QTEST_MAIN(MenuSmokeTest)
+DDFCAM_GUI_TEST_MAIN(MenuSmokeTest)
 #include "menu_smoke_test.moc"

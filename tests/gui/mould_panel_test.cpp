@@ -4,6 +4,7 @@
 // as a job; statistics against an independent compareSurfaces run and the analytic ramp,
 // histogram, morph slider points, a section drawn by two clicks, undo/redo, both layouts and
 // the shared springback pair once.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "workbench_test.h"
 
@@ -295,5 +296,5 @@ void MouldPanelTest::sharedSpringbackPair() {
   waitOk();
 }
 
-QTEST_MAIN(MouldPanelTest)
+DDFCAM_GUI_TEST_MAIN(MouldPanelTest)
 #include "mould_panel_test.moc"

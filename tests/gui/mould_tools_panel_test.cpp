@@ -2,6 +2,7 @@
 // The Mould tools panel under Xvfb on analytic shapes: cube/sphere morph ends, engraved plate
 // scaled and bent, one compensation step of the linear model (alpha law), the convergence
 // plot, undo/redo, the radial blend at the picked point, and mesh export read back.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "workbench_test.h"
 
@@ -302,5 +303,5 @@ void MouldToolsPanelTest::exportWritesAReadableMesh() {
   QVERIFY(f_.script.errors.isEmpty());
 }
 
-QTEST_MAIN(MouldToolsPanelTest)
+DDFCAM_GUI_TEST_MAIN(MouldToolsPanelTest)
 #include "mould_tools_panel_test.moc"

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The curvature the workbench shows for an imported mesh part with the default (reduced)
 // support: k_max and k_min from the Fields panel against the analytic curvature of a torus.
+#include "gui_test_registry.h"
 #include "../support/test_meshes.h"
 #include "frame_checks.h"
 #include "workbench_fixture.h"
@@ -90,5 +91,5 @@ void PartCurvatureTest::reducedPartShowsTheCurvatureOfItsMesh() {
   ddfcam::test::dumpFrame(f_.window->view()->renderImage(), "part_curvature_torus_kmin");
 }
 
-QTEST_MAIN(PartCurvatureTest)
+DDFCAM_GUI_TEST_MAIN(PartCurvatureTest)
 #include "part_curvature_test.moc"

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The part import dialog: sizes in each unit, the unit advice, the choices it starts with, the
 // load parameters of the choices, and what the widget shows.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 
 #include <ddfcam/gui/app_setup.h>
@@ -146,5 +147,5 @@ void PartImportDialogTest::dialogShowsSizesAndPreselects() {
   QCOMPARE(cadDialog.choices().unit, std::nullopt);
 }
 
-QTEST_MAIN(PartImportDialogTest)
+DDFCAM_GUI_TEST_MAIN(PartImportDialogTest)
 #include "part_import_dialog_test.moc"

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Importing real parts in the workbench: a part in metres, a cancelled import, the Part panel's
 // facts, the stock offer, the crust overlays, mould surfaces in a unit and CAD faces.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "workbench_fixture.h"
 
@@ -385,5 +386,5 @@ void PartImportTest::bladeHoldsHalfAMillimetreOfStockAndRaises() {
   ddfcam::test::dumpFrame(f_.window->view()->renderImage(), "part_import_blade_stock");
 }
 
-QTEST_MAIN(PartImportTest)
+DDFCAM_GUI_TEST_MAIN(PartImportTest)
 #include "part_import_test.moc"

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // PartScene under Xvfb: overlays (add, hide, remove, drawn over the surface) and surface picking.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "part_scene_fixture.h"
 
@@ -185,5 +186,5 @@ void PartSceneOverlayTest::pickMissesBackgroundAndHiddenSurface() {
   QVERIFY(!scene_->pickSurface(*view_, centre).has_value());
 }
 
-QTEST_MAIN(PartSceneOverlayTest)
+DDFCAM_GUI_TEST_MAIN(PartSceneOverlayTest)
 #include "part_scene_overlay_test.moc"

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // PartScene under Xvfb: field colours on screen, the scalar bar and the demo part with a field.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "part_scene_fixture.h"
 
@@ -246,5 +247,5 @@ void PartSceneTest::demoPartWithFieldScreenshot() {
   QCOMPARE(ddfcam::gui::VtkErrorMonitor::errorCount(), 0);
 }
 
-QTEST_MAIN(PartSceneTest)
+DDFCAM_GUI_TEST_MAIN(PartSceneTest)
 #include "part_scene_test.moc"

@@ -2,6 +2,7 @@
 // File > Export tool paths under Xvfb: CSV, APT (both dialects, inch) and G-code (3-axis, A/C,
 // B/C) written from a project with a roll path and two ball-end paths, read back and compared
 // with the project's poses to the written precision; one file per region; inline validation.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "workbench_fixture.h"
 
@@ -438,5 +439,5 @@ class PathExportTest : public QObject {
   void cleanupTestCase() { window_.reset(); }
 };
 
-QTEST_MAIN(PathExportTest)
+DDFCAM_GUI_TEST_MAIN(PathExportTest)
 #include "path_export_test.moc"

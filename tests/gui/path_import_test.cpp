@@ -3,6 +3,7 @@
 // unit override checked pose by pose), a hand-written APT with a CUTTER (new tool), the shared
 // NX file by drag and drop; one undo step each, reader warnings in the console, bad files
 // reported once.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "workbench_fixture.h"
 
@@ -394,5 +395,5 @@ class PathImportTest : public QObject {
   void cleanupTestCase() { window_.reset(); }
 };
 
-QTEST_MAIN(PathImportTest)
+DDFCAM_GUI_TEST_MAIN(PathImportTest)
 #include "path_import_test.moc"

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Plot adapters and the Plots dock: bars against brute-force bin counts, exports read back.
+#include "gui_test_registry.h"
 #include <ddfcam/error.h>
 #include <ddfcam/gui/adapters/plot_series.h>
 #include <ddfcam/gui/plot_dock.h>
@@ -355,5 +356,5 @@ void PlotDockTest::exportActionUsesProviderAndReporter() {
   QVERIFY2(errors_[0].contains(nextPath_), qPrintable(errors_[0]));
 }
 
-QTEST_MAIN(PlotDockTest)
+DDFCAM_GUI_TEST_MAIN(PlotDockTest)
 #include "plot_dock_test.moc"

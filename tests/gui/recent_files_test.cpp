@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // RecentFiles: order, dedup, limit, persistence through a settings file, and its menu.
+#include "gui_test_registry.h"
 #include <ddfcam/error.h>
 #include <ddfcam/gui/recent_files.h>
 
@@ -146,5 +147,5 @@ void RecentFilesTest::emptyMenuSaysSo() {
   QVERIFY(!empty->isEnabled());
 }
 
-QTEST_MAIN(RecentFilesTest)
+DDFCAM_GUI_TEST_MAIN(RecentFilesTest)
 #include "recent_files_test.moc"

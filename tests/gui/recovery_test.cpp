@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // RecoveryManager: autosave after edits only, a simulated crash found and recovered exactly.
+#include "gui_test_registry.h"
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/error.h>
 #include <ddfcam/gui/document.h>
@@ -226,5 +227,5 @@ void RecoveryTest::corruptRecoveryFileIsReportedAndKept() {
   QVERIFY(!QFile::exists(path));
 }
 
-QTEST_MAIN(RecoveryTest)
+DDFCAM_GUI_TEST_MAIN(RecoveryTest)
 #include "recovery_test.moc"

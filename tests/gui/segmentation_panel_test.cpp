@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The Segmentation panel under Xvfb: automatic segmentation of z = sin x sin y, region list
 // edits with undo/redo, a brush stroke and a lasso driven by mouse events, plan edits.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "workbench_test.h"
 
@@ -344,7 +345,7 @@ void SegmentationPanelTest::planEditsAreUndoable() {
   QVERIFY(project().regions == before);
 }
 
-QTEST_MAIN(SegmentationPanelTest)
+DDFCAM_GUI_TEST_MAIN(SegmentationPanelTest)
 // Region colours are drawn over the surface; a field the user picks must not stay hidden
 // under them, and a new segmentation shows the regions again.
 void SegmentationPanelTest::showingAFieldHidesTheRegionColours() {

@@ -2,6 +2,7 @@
 // The issue-4 workflow on the shared bunny and turbine blade under Xvfb: File > Open of a mesh,
 // colour by k_max, automatic segmentation, covering the largest region with evenly spaced
 // lines; contacts checked by brute force against the mesh file.
+#include "gui_test_registry.h"
 #include "../support/brute_force_distance.h"
 #include "frame_checks.h"
 #include "workbench_test.h"
@@ -228,5 +229,5 @@ void SharedPartsGuiTest::turbineBladeColouredByKMax() {
   ddfcam::test::dumpFrame(frame, "shared_blade_kmax");
 }
 
-QTEST_MAIN(SharedPartsGuiTest)
+DDFCAM_GUI_TEST_MAIN(SharedPartsGuiTest)
 #include "shared_parts_gui_test.moc"

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Simulation options under Xvfb: stock allowance, swept vs discrete, penetration correction in a
 // bore, Preston removal, all through the Simulation panel against analytic expectations.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "workbench_test.h"
 
@@ -310,5 +311,5 @@ void SimulationOptionsTest::prestonFeedIsThePathsFeed() {
   panel().options().setRemovalModel(RemovalModel::Rigid);
 }
 
-QTEST_MAIN(SimulationOptionsTest)
+DDFCAM_GUI_TEST_MAIN(SimulationOptionsTest)
 #include "simulation_options_test.moc"

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Simulation playback under Xvfb: play a demo path to the end and see the groove, undo it,
 // pause and step one pose, cancel, the tool at the current pose, collisions listed and marked.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "simulation_fixture.h"
 #include "workbench_test.h"
@@ -241,5 +242,5 @@ void SimulationPlaybackTest::collisionsAreListedAndMarked() {
   playback().cancel();
 }
 
-QTEST_MAIN(SimulationPlaybackTest)
+DDFCAM_GUI_TEST_MAIN(SimulationPlaybackTest)
 #include "simulation_playback_test.moc"

@@ -3,6 +3,7 @@
 // the paths meet the tolerance (measured on the produced heights against the plane), their
 // count is near the iso-scallop count, iterations are listed and drawn, Apply adds the path
 // and the error map as one undo step.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "workbench_test.h"
 
@@ -129,5 +130,5 @@ void SpacingRefinementPanelTest::applyAddsPathAndErrorMapInOneUndoStep() {
   QCOMPARE(project().fields.size(), fields);
 }
 
-QTEST_MAIN(SpacingRefinementPanelTest)
+DDFCAM_GUI_TEST_MAIN(SpacingRefinementPanelTest)
 #include "spacing_refinement_panel_test.moc"

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Streamlines panel under Xvfb: the smoothing preview and its undo step, fairing, the path list,
 // drawn strokes and the raw lines kept with a path, on the cylinder.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "streamlines_panel_fixture.h"
 
@@ -325,5 +326,5 @@ void StreamlinesPanelEditTest::planningResultsLiveWithThePath() {
   QCOMPARE(project().paths.front().rawLines, planned.rawLines);
 }
 
-QTEST_MAIN(StreamlinesPanelEditTest)
+DDFCAM_GUI_TEST_MAIN(StreamlinesPanelEditTest)
 #include "streamlines_panel_edit_test.moc"

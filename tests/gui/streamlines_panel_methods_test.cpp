@@ -2,6 +2,7 @@
 // Streamlines panel under Xvfb: tracer choice (RK4, raster walk, continuous) on the cylinder,
 // direction strokes stored in a region plan, and Escape cancelling a brush stroke
 // (scallop-tolerance coverage: streamlines_panel_scallop_test.cpp).
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "workbench_test.h"
 
@@ -365,5 +366,5 @@ void StreamlinesPanelMethodsTest::escapeCancelsABrushStroke() {
   QVERIFY(!scene().hasOverlay(ddfcam::gui::RegionViewTool::kBrushCursorOverlay));
 }
 
-QTEST_MAIN(StreamlinesPanelMethodsTest)
+DDFCAM_GUI_TEST_MAIN(StreamlinesPanelMethodsTest)
 #include "streamlines_panel_methods_test.moc"

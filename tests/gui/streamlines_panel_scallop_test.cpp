@@ -2,6 +2,7 @@
 // Streamlines panel under Xvfb: "Cover region" for a ScallopTolerance region plan spaces the
 // lines by the scallop-height formula with a ball, and falls back to the fixed spacing with a
 // straight roll.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "workbench_test.h"
 
@@ -155,5 +156,5 @@ void StreamlinesPanelScallopTest::scallopToleranceSpacingFollowsTheCurvature() {
   ddfcam::test::dumpFrame(panel().grab().toImage(), "streamlines_scallop_panel");
 }
 
-QTEST_MAIN(StreamlinesPanelScallopTest)
+DDFCAM_GUI_TEST_MAIN(StreamlinesPanelScallopTest)
 #include "streamlines_panel_scallop_test.moc"

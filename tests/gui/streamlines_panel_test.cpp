@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Streamlines panel under Xvfb: field glyphs, singularity markers and automatic coverage of a
 // region, on analytic parts.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "streamlines_panel_fixture.h"
 
@@ -169,5 +170,5 @@ void StreamlinesPanelTest::coverFillsTheRegion() {
   QVERIFY(project().paths.empty());
 }
 
-QTEST_MAIN(StreamlinesPanelTest)
+DDFCAM_GUI_TEST_MAIN(StreamlinesPanelTest)
 #include "streamlines_panel_test.moc"

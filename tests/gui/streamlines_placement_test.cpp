@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Streamlines panel under Xvfb: the "Tool placement" group (lead angle, sampling from a
 // tolerance) shapes the paths the panel creates, checked against the geometry of a plane.
+#include "gui_test_registry.h"
 #include "streamlines_panel_fixture.h"
 
 #include <ddfcam/ddf/analytic_generators.h>
@@ -108,5 +109,5 @@ void StreamlinesPlacementTest::withoutSamplingPosesSitAtTheLinePoints() {
   }
 }
 
-QTEST_MAIN(StreamlinesPlacementTest)
+DDFCAM_GUI_TEST_MAIN(StreamlinesPlacementTest)
 #include "streamlines_placement_test.moc"

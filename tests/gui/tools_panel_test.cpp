@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Tools panel under Xvfb: add, edit, duplicate and delete tools with exact undo and redo,
 // inline validation, tool library round trip, the tool drawn in the view.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "simulation_fixture.h"
 #include "workbench_test.h"
@@ -216,5 +217,5 @@ void ToolsPanelTest::selectedToolIsDrawnInTwoColours() {
   ddfcam::test::dumpFrame(f_.window->view()->renderImage(), "tools_panel_roll_on_path");
 }
 
-QTEST_MAIN(ToolsPanelTest)
+DDFCAM_GUI_TEST_MAIN(ToolsPanelTest)
 #include "tools_panel_test.moc"

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // VtkView under Xvfb: a real frame, an opaque background, camera interaction, no VTK errors.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 
 #include <ddfcam/error.h>
@@ -340,5 +341,5 @@ void VtkViewTest::renderImageOfHiddenView() {
   QCOMPARE(ddfcam::gui::VtkErrorMonitor::errorCount(), 0);
 }
 
-QTEST_MAIN(VtkViewTest)
+DDFCAM_GUI_TEST_MAIN(VtkViewTest)
 #include "vtk_view_test.moc"

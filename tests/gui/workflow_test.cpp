@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Workbench workflows under Xvfb: colour by a field (scalar bar and histogram against the
 // data), picking, jobs and cancel, undo/redo, project save/load and crash recovery.
+#include "gui_test_registry.h"
 #include "frame_checks.h"
 #include "workbench_test.h"
 
@@ -425,5 +426,5 @@ void WorkflowTest::clickSeedsAStreamlineThatIsDrawn() {
   ddfcam::test::dumpFrame(view.renderImage(), "workbench_streamline");
 }
 
-QTEST_MAIN(WorkflowTest)
+DDFCAM_GUI_TEST_MAIN(WorkflowTest)
 #include "workflow_test.moc"
