@@ -136,9 +136,6 @@ void StreamlinesPanel::addPath(std::vector<planning::Streamline> lines, const QS
     const QString idle =
         placed.linked ? tr(", linked: idle %1 mm").arg(placed.linked->idleLengthMm, 0, 'f', 1)
                       : QString();
-    // The path keeps the lines as traced, so smoothing and fairing later start from them.
-    placed.placed.path.rawLines = placed.lines;
-    if (placed.linked) placed.placed.path.linkedIdleMm = placed.linked->idleLengthMm;
     document.push(std::make_unique<AddPathCommand>(document, std::move(placed.placed.path),
                                                    needTool ? std::optional(tool) : std::nullopt));
     status_->setText(tr("%1: %2 lines, cutting %3 mm%4")

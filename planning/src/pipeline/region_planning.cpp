@@ -237,6 +237,10 @@ RegionPath regionToolPath(const ddf::DisplacementField& part, std::vector<Stream
     out.linked = orderLinesForCutting(part, lines, linkingParamsOf(plan));
   for (const Streamline& line : lines) out.cuttingLengthMm += line.lengthMm;
   out.placed = toolPathFromStreamlinesDetailed(part, lines, tool, toolIndex, placement);
+  // The path keeps the lines as traced and ordered, so smoothing and fairing it later (in the
+  // workbench, or in a project a batch job wrote) start from them, not from the placed poses.
+  out.placed.path.rawLines = lines;
+  if (out.linked) out.placed.path.linkedIdleMm = out.linked->idleLengthMm;
   out.lines = std::move(lines);
   return out;
 }

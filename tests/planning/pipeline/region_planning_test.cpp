@@ -97,6 +97,22 @@ TEST(RegionPlanning, FeedSignOrientsTheCut) {
       const ToolPath& poses = path.placed.path;
       ASSERT_GE(poses.poses.size(), 2u);
       EXPECT_GT((poses.poses[1].contact - poses.poses[0].contact).x() * sign, 0.0);
+      // The path keeps the lines it was placed along, one per pass, and the linking's idle
+      // length, so every front end's project can smooth or fair it again.
+      ASSERT_EQ(poses.rawLines.size(), path.lines.size());
+      EXPECT_EQ(poses.rawLines.size(), poses.passStarts.size());
+      for (std::size_t l = 0; l < path.lines.size(); ++l) {
+        ASSERT_EQ(poses.rawLines[l].points.size(), path.lines[l].points.size());
+        EXPECT_EQ(poses.rawLines[l].points.front().point, path.lines[l].points.front().point);
+        EXPECT_EQ(poses.rawLines[l].points.back().point, path.lines[l].points.back().point);
+        // pass l starts where its line starts (the placement follows the oriented line)
+        EXPECT_LT((poses.poses[static_cast<std::size_t>(poses.passStarts[l])].contact -
+                   path.lines[l].points.front().point)
+                      .norm(),
+                  1.0);
+      }
+      ASSERT_TRUE(poses.linkedIdleMm.has_value());
+      EXPECT_EQ(*poses.linkedIdleMm, path.linked->idleLengthMm);
     }
 }
 

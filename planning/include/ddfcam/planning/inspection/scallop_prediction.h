@@ -150,7 +150,7 @@ struct ScallopSimulationParams {
 /// @throws InvalidInput for invalid case values or params; Cancelled through params.progress.
 ScallopRow simulateScallopCase(const ScallopCase& c, const ScallopSimulationParams& params = {});
 
-/// @brief simulateScallopCase() for every case, in order (the table of issue 5 part 4).
+/// @brief simulateScallopCase() for every case, in order (the predicted-against-simulated table).
 /// @throws as simulateScallopCase().
 std::vector<ScallopRow> scallopTable(std::span<const ScallopCase> cases,
                                      const ScallopSimulationParams& params = {});

@@ -12,7 +12,7 @@ namespace ddfcam::planning {
 /// @brief How the distance between neighbouring paths of a region is chosen.
 enum class SpacingMode {
   FixedSpacing,      ///< RegionPlan::spacingMm between neighbouring paths
-  ScallopTolerance,  ///< spacing from RegionPlan::scallopToleranceMm and the tool (issue 5)
+  ScallopTolerance,  ///< spacing from RegionPlan::scallopToleranceMm and the tool
 };
 
 /// @brief In which order and direction the paths of a region are cut.

@@ -142,7 +142,8 @@ struct RegionPath {
 
 /// @brief Orders and orients @p lines for cutting by @p plan's linking order and feed sign
 /// (orderLinesForCutting(), when @p link and more than one line) and places @p tool along them
-/// (toolPathFromStreamlinesDetailed()).
+/// (toolPathFromStreamlinesDetailed()). The placed path keeps the ordered lines as its
+/// ToolPath::rawLines and the linking's idle length as ToolPath::linkedIdleMm.
 /// @param toolIndex index of @p tool in Project::tools, stored in the path.
 /// @throws InvalidInput as orderLinesForCutting() and toolPathFromStreamlinesDetailed().
 RegionPath regionToolPath(const ddf::DisplacementField& part, std::vector<Streamline> lines,

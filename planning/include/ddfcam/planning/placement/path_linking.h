@@ -50,7 +50,7 @@ struct PathMove {
   bool reversed = false;          ///< a Cut runs against the input path's point order
 };
 
-/// @brief Paths in machining order with their links, and the report of sec. 8.3 / issue 4.
+/// @brief Paths in machining order with their links, and the report of sec. 8.3.
 struct LinkedPaths {
   /// Moves in order: Cut, then per following path its link moves and its Cut.
   std::vector<PathMove> moves;
