@@ -205,7 +205,14 @@ bool MainWindow::importPathFile(const QString& path) {
 }
 
 bool MainWindow::exportToolPaths() {
-  return exportPathsInteractively(document_->project(), dialogs_, *settings_, console_);
+  const QStringList written =
+      exportPathsInteractively(document_->project(), dialogs_, *settings_, console_);
+  if (written.isEmpty()) return false;
+  // Success is said where the user looks, not only in the console.
+  QStringList names;
+  for (const QString& file : written) names << QFileInfo(file).fileName();
+  statusBar()->showMessage(tr("Exported tool paths to %1").arg(names.join(", ")), 8000);
+  return true;
 }
 
 bool MainWindow::openDemo() {

@@ -15,6 +15,7 @@
 #include <QSettings>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -219,6 +220,21 @@ QString pathExportSuffix(PathExportFormat format) {
   return QString::fromStdString(io::pathFileExtensions(written).front()).remove(0, 1);
 }
 
+QString exportFileStem(const std::string& partName) {
+  if (partName.empty()) return QStringLiteral("paths");
+  // Suffixes of the files a part is opened from; any other dot belongs to the name.
+  static const std::set<std::string> kPartSuffixes = {".stl",  ".obj", ".ply",  ".off",
+                                                      ".vtp",  ".vtu", ".step", ".stp",
+                                                      ".iges", ".igs", ".ddf",  ".ddfproj"};
+  std::string stem = partName;
+  std::string suffix = std::filesystem::path(stem).extension().string();
+  std::transform(suffix.begin(), suffix.end(), suffix.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (kPartSuffixes.count(suffix) && suffix.size() < stem.size())
+    stem.resize(stem.size() - suffix.size());
+  return QString::fromStdString(stem).replace(' ', '_');
+}
+
 PathExportOptions normalisedExportOptions(PathExportOptions o) {
   if (!dialectBelongs(o.format, o.dialect))
     o.dialect = o.format == PathExportFormat::Apt ? PathExportDialect::AptStandard
@@ -232,27 +248,26 @@ PathExportOptions normalisedExportOptions(PathExportOptions o) {
   return o;
 }
 
-bool exportPathsInteractively(const planning::Project& project, const WorkbenchDialogs& dialogs,
-                              QSettings& settings, ConsoleDock* console) {
+QStringList exportPathsInteractively(const planning::Project& project,
+                                     const WorkbenchDialogs& dialogs, QSettings& settings,
+                                     ConsoleDock* console) {
   PathExportOptions initial = loadExportOptions(settings);
   for (std::size_t i = 0; i < project.paths.size(); ++i) initial.paths.push_back(int(i));
   const QString folder = settings.value("pathExport/folder", QDir::homePath()).toString();
-  const QString stem =
-      project.partName.empty() ? "paths" : QString::fromStdString(project.partName);
-  initial.filePath = QDir(folder).filePath(QString(stem).replace(' ', '_') + "." +
+  initial.filePath = QDir(folder).filePath(exportFileStem(project.partName) + "." +
                                            pathExportSuffix(initial.format));
   const auto chosen = dialogs.exportPaths ? dialogs.exportPaths(project, initial) : initial;
-  if (!chosen) return false;
+  if (!chosen) return {};
   QStringList written;
   const bool ok = runUserAction(dialogs.error, QObject::tr("Export tool paths"),
                                 [&] { written = exportPaths(project, *chosen); });
-  if (!ok) return false;
+  if (!ok) return {};
   saveExportOptions(settings, *chosen);
   settings.setValue("pathExport/folder", QFileInfo(chosen->filePath).absolutePath());
   if (console)
     for (const QString& file : written)
       console->appendMessage(LogLevel::Info, QObject::tr("Exported tool paths to %1").arg(file));
-  return true;
+  return written;
 }
 
 PathExportOptions loadExportOptions(QSettings& settings) {

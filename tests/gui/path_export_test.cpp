@@ -2,8 +2,8 @@
 // File > Export tool paths under Xvfb: CSV, APT (both dialects, inch) and G-code (3-axis, A/C,
 // B/C) written from a project with a roll path and two ball-end paths, read back and compared
 // with the project's poses to the written precision; one file per region; inline validation.
-#include "gui_test_registry.h"
 #include "frame_checks.h"
+#include "gui_test_registry.h"
 #include "workbench_fixture.h"
 
 #include <ddfcam/gui/app_setup.h>
@@ -21,6 +21,7 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QRegularExpression>
+#include <QStatusBar>
 #include <QtTest/QtTest>
 
 #include <cmath>
@@ -415,6 +416,9 @@ class PathExportTest : public QObject {
     window_->findChild<QAction*>("actionExportPaths")->trigger();
     QVERIFY2(script_.errors.isEmpty(), qPrintable(script_.errors.join('\n')));
     QVERIFY(QFile::exists(o.filePath));
+    // Success is said in the status bar, with the file's name.
+    QVERIFY2(window_->statusBar()->currentMessage().contains("remembered.apt"),
+             qPrintable(window_->statusBar()->currentMessage()));
     choice_.reset();  // cancel the next one
     window_->findChild<QAction*>("actionExportPaths")->trigger();
     QVERIFY(offered_);
@@ -433,6 +437,29 @@ class PathExportTest : public QObject {
     window_->findChild<QAction*>("actionExportPaths")->trigger();
     QCOMPARE(offered_->machineFile, o.machineFile);
     QVERIFY(offered_->filePath.startsWith(dir_.path()));
+  }
+
+  void suggestsTheFileAfterThePartWithoutItsSuffix() {
+    const planning::Project saved = project();
+    const std::vector<std::pair<std::string, QString>> cases = {
+        {"blade mm.stl", "blade_mm"},     // a mesh: its suffix goes, blanks become '_'
+        {"bolt_clip.STEP", "bolt_clip"},  // CAD, any case
+        {"part.v2", "part.v2"},           // not a part file's suffix: part of the name
+        {"", "paths"}};                   // unnamed
+    for (const auto& [name, stem] : cases) {
+      planning::Project renamed = saved;
+      renamed.partName = name;
+      window_->document().reset(std::move(renamed));
+      QVERIFY(window_->waitForJobs());
+      choice_.reset();  // the dialog is cancelled; what it was offered is checked
+      offered_.reset();
+      window_->findChild<QAction*>("actionExportPaths")->trigger();
+      QVERIFY(offered_);
+      const QFileInfo file(offered_->filePath);
+      QCOMPARE(file.fileName(), stem + "." + ddfcam::gui::pathExportSuffix(offered_->format));
+    }
+    window_->document().reset(saved);
+    QVERIFY(window_->waitForJobs());
   }
 
   void cleanup() { QCOMPARE(ddfcam::gui::VtkErrorMonitor::errorCount(), 0); }

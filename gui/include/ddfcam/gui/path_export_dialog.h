@@ -87,6 +87,12 @@ std::pair<int, int> coordinateDecimalsRange(PathExportFormat format);
 /// "csv", "apt" or "ngc".
 QString pathExportSuffix(PathExportFormat format);
 
+/// @brief File stem File > Export tool paths suggests for a part named @p partName: the name
+/// without the suffix of the file it was opened from (a mesh, CAD, DDF or project file, so
+/// "blade_mm.stl" gives "blade_mm", not "blade_mm.stl.csv"), blanks as '_'; "paths" for an
+/// unnamed part.
+QString exportFileStem(const std::string& partName);
+
 /// @brief Makes @p options consistent with its format: a dialect of the format, decimals in the
 /// format's range, the tool reference point for APT and G-code. Values already valid stay.
 PathExportOptions normalisedExportOptions(PathExportOptions options);
@@ -116,9 +122,10 @@ void saveExportOptions(QSettings& settings, const PathExportOptions& options);
 /// last stored in @p settings, all paths checked, the file named after the part), writes the
 /// files through runUserAction (errors to dialogs.error), stores the choices and lists the
 /// files in @p console (may be null).
-/// @return true if files were written; false if cancelled or failed.
-bool exportPathsInteractively(const planning::Project& project, const WorkbenchDialogs& dialogs,
-                              QSettings& settings, ConsoleDock* console);
+/// @return the files written; empty if cancelled or failed.
+QStringList exportPathsInteractively(const planning::Project& project,
+                                     const WorkbenchDialogs& dialogs, QSettings& settings,
+                                     ConsoleDock* console);
 
 /// @brief The modal dialog of File > Export tool paths. Shows one problem at a time under the
 /// options (pathExportProblem) and enables OK only when there is none.
