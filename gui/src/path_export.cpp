@@ -7,6 +7,7 @@
 #include <ddfcam/gui/project_actions.h>
 #include <ddfcam/io/programs/machine_file.h>
 #include <ddfcam/io/programs/path_file.h>
+#include <ddfcam/io/project/project_loader.h>
 #include <ddfcam/planning/model/project.h>
 #include <ddfcam/planning/placement/cl_program_builder.h>
 
@@ -15,7 +16,6 @@
 #include <QSettings>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -222,17 +222,10 @@ QString pathExportSuffix(PathExportFormat format) {
 
 QString exportFileStem(const std::string& partName) {
   if (partName.empty()) return QStringLiteral("paths");
-  // Suffixes of the files a part is opened from; any other dot belongs to the name.
-  static const std::set<std::string> kPartSuffixes = {".stl",  ".obj", ".ply",  ".off",
-                                                      ".vtp",  ".vtu", ".step", ".stp",
-                                                      ".iges", ".igs", ".ddf",  ".ddfproj"};
-  std::string stem = partName;
-  std::string suffix = std::filesystem::path(stem).extension().string();
-  std::transform(suffix.begin(), suffix.end(), suffix.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (kPartSuffixes.count(suffix) && suffix.size() < stem.size())
-    stem.resize(stem.size() - suffix.size());
-  return QString::fromStdString(stem).replace(' ', '_');
+  // Only the suffix of a file a part is opened from goes; any other dot belongs to the name.
+  const std::filesystem::path name(partName);
+  const std::string stem = io::canOpenAsProject(name) ? name.stem().string() : partName;
+  return QString::fromStdString(stem.empty() ? partName : stem).replace(' ', '_');
 }
 
 PathExportOptions normalisedExportOptions(PathExportOptions o) {

@@ -8,6 +8,7 @@
 #include <QtTest/QtTest>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -19,7 +20,11 @@ std::map<std::string, GuiTestEntry>& guiTestRegistry() {
 }
 
 bool registerGuiTest(const std::string& name, GuiTestEntry entry) {
-  guiTestRegistry().emplace(name, std::move(entry));
+  // Two classes of one name would silently leave one of them untested.
+  if (!guiTestRegistry().emplace(name, std::move(entry)).second) {
+    std::fprintf(stderr, "ddfcam_gui_tests: test class %s registered twice\n", name.c_str());
+    std::abort();
+  }
   return true;
 }
 

@@ -88,7 +88,7 @@ std::pair<int, int> coordinateDecimalsRange(PathExportFormat format);
 QString pathExportSuffix(PathExportFormat format);
 
 /// @brief File stem File > Export tool paths suggests for a part named @p partName: the name
-/// without the suffix of the file it was opened from (a mesh, CAD, DDF or project file, so
+/// without the suffix of the file it was opened from (io::canOpenAsProject(), so
 /// "blade_mm.stl" gives "blade_mm", not "blade_mm.stl.csv"), blanks as '_'; "paths" for an
 /// unnamed part.
 QString exportFileStem(const std::string& partName);
