@@ -12,6 +12,7 @@
 #include <cassert>
 #include <string>
 
+#include "adaptive_assembly.h"
 #include "adaptive_face.h"
 #include "canonical_points.h"
 
@@ -58,22 +59,6 @@ struct BorderSlot {
   }
 };
 
-constexpr std::uint64_t kVertexKey = std::uint64_t{0xffffffff} << 32;
-
-std::uint64_t borderKey(const DisplacementField& ddf, std::int64_t S, int f,
-                        const detail::FaceVertex& v) {
-  const std::int64_t n = ddf.raster().steps(), NS = n * S;
-  const int side = detail::borderSide(v.I, v.K, NS);
-  if (side >= 0) {
-    return (static_cast<std::uint64_t>(ddf.topology().faceEdge(f, side)) << 32) |
-           static_cast<std::uint64_t>(detail::canonicalT(ddf, f, side, v.I, v.K, NS));
-  }
-  if (v.I % S != 0 || v.K % S != 0) return 0;  // inner point
-  const int i = static_cast<int>(v.I / S), k = static_cast<int>(v.K / S);
-  if (i != n && k != n && i + k != 0) return 0;
-  return kVertexKey | ddf.topology().id(f, i, k);
-}
-
 // Mesh vertices for all face vertices: points on the support's vertices and edges once (keyed
 // by their place; both faces computed them bitwise identically), inner points per face. Returns
 // the vertices inside every support edge in edge order.
@@ -86,7 +71,7 @@ std::vector<SupportVertex> numberVertices(const DisplacementField& ddf, std::int
     FaceResult& r = results[f];
     r.vertexIndex.assign(r.vertices.size(), -1);
     std::size_t border = 0;
-    for (const auto& v : r.vertices) border += borderKey(ddf, S, f, v) != 0 ? 1 : 0;
+    for (const auto& v : r.vertices) border += detail::borderKey(ddf, S, f, v) != 0 ? 1 : 0;
     borderOffset[f + 1] = border;
     innerOffset[f + 1] = r.vertices.size() - border;
   });
@@ -98,7 +83,7 @@ std::vector<SupportVertex> numberVertices(const DisplacementField& ddf, std::int
   tbb::parallel_for(0, faces, [&](int f) {
     std::size_t at = borderOffset[f];
     for (std::size_t v = 0; v < results[f].vertices.size(); ++v) {
-      const std::uint64_t key = borderKey(ddf, S, f, results[f].vertices[v]);
+      const std::uint64_t key = detail::borderKey(ddf, S, f, results[f].vertices[v]);
       if (key != 0) border[at++] = {key, f, static_cast<int>(v)};
     }
   });
@@ -111,7 +96,7 @@ std::vector<SupportVertex> numberVertices(const DisplacementField& ddf, std::int
     if (b == 0 || border[b].key != border[b - 1].key) {
       const auto& first = results[border[b].face].vertices[border[b].slot];
       vertices.push_back(first.position);
-      if ((border[b].key & kVertexKey) != kVertexKey) {
+      if (!detail::isSupportVertexKey(border[b].key)) {
         onEdges.push_back({static_cast<std::uint32_t>(border[b].key >> 32),
                            static_cast<std::int64_t>(border[b].key & 0xffffffffu),
                            static_cast<int>(vertices.size()) - 1});
@@ -133,97 +118,21 @@ std::vector<SupportVertex> numberVertices(const DisplacementField& ddf, std::int
   return onEdges;
 }
 
-// T-vertex removal: every leaf collects the vertices inside its edges (splits nest, so inside
-// a support edge these are exactly the listed vertices strictly between its ends, made by
-// either face) and is re-triangulated: fanned from the opposite corner when one edge carries
-// vertices, else around its centroid on the flat leaf triangle.
-struct TVertexRemoval {
-  const DisplacementField* ddf;
-  const detail::AdaptiveContext* ctx;
+// The mesh vertices strictly inside support edge @p edge between positions ta and tb, in order
+// from ta to tb, from the list of all vertices inside support edges in edge order.
+struct SortedEdgeChain {
   const std::vector<SupportVertex>* onEdges;
-  const std::vector<Vec3>* vertices;
-
-  void supportChain(int f, const FaceResult& r, int side, int from, int to,
-                    std::vector<int>& out) const {
-    const std::int64_t NS = ddf->raster().steps() * ctx->scale;
-    const auto& a = r.vertices[from];
-    const auto& b = r.vertices[to];
-    const std::int64_t ta = detail::canonicalT(*ddf, f, side, a.I, a.K, NS);
-    const std::int64_t tb = detail::canonicalT(*ddf, f, side, b.I, b.K, NS);
-    const auto edge = static_cast<std::uint32_t>(ddf->topology().faceEdge(f, side));
+  void operator()(std::uint32_t edge, std::int64_t ta, std::int64_t tb,
+                  std::vector<int>& out) const {
     const auto first = std::upper_bound(onEdges->begin(), onEdges->end(),
                                         SupportVertex{edge, std::min(ta, tb), 0});
     const auto last =
         std::lower_bound(first, onEdges->end(), SupportVertex{edge, std::max(ta, tb), 0});
     const std::size_t begin = out.size();
     for (auto it = first; it != last; ++it) out.push_back(it->vertex);
-    if (ta > tb) std::reverse(out.begin() + begin, out.end());
-  }
-
-  void retriangulate(int f, FaceResult& r, std::vector<int>& poly) const {
-    r.triangles.clear();
-    r.centroids.clear();
-    for (const auto& leaf : r.leaves) {
-      poly.clear();
-      std::array<int, 3> cornerAt{};
-      int splitEdges = 0, lastSplit = 0;
-      for (int s = 0; s < 3; ++s) {
-        cornerAt[s] = static_cast<int>(poly.size());
-        poly.push_back(r.vertexIndex[leaf.corner[s]]);
-        const std::size_t before = poly.size();
-        if (leaf.supportMask & (1u << s)) {
-          const int side = supportSide(r, leaf.corner[s], leaf.corner[(s + 1) % 3]);
-          supportChain(f, r, side, leaf.corner[s], leaf.corner[(s + 1) % 3], poly);
-        } else {
-          for (int c = leaf.chainBegin[s]; c < leaf.chainEnd[s]; ++c)
-            poly.push_back(r.vertexIndex[r.chain[c]]);
-        }
-        if (poly.size() > before) ++splitEdges, lastSplit = s;
-      }
-      emitPolygon(r, poly, cornerAt, splitEdges, lastSplit);
-    }
-    for (const auto& t : r.finals)
-      r.triangles.push_back({r.vertexIndex[t[0]], r.vertexIndex[t[1]], r.vertexIndex[t[2]]});
-  }
-
-  // Local support side (see detail::borderSide) shared by two border vertices of a face.
-  static int supportSide(const FaceResult& r, int u, int v) {
-    const auto& a = r.vertices[u];
-    const auto& b = r.vertices[v];
-    if (a.K == 0 && b.K == 0) return 0;
-    if (a.I == 0 && b.I == 0) return 1;
-    return 2;
-  }
-
-  void emitPolygon(FaceResult& r, const std::vector<int>& poly, const std::array<int, 3>& cornerAt,
-                   int splitEdges, int lastSplit) const {
-    const int count = static_cast<int>(poly.size());
-    if (splitEdges == 0) {
-      r.triangles.push_back({poly[0], poly[1], poly[2]});
-    } else if (splitEdges == 1) {
-      const int apex = poly[cornerAt[(lastSplit + 2) % 3]];
-      const int end = lastSplit == 2 ? count : cornerAt[lastSplit + 1];
-      for (int p = cornerAt[lastSplit]; p < end; ++p)
-        r.triangles.push_back({poly[p], poly[(p + 1) % count], apex});
-    } else {
-      const auto& vs = *vertices;
-      const int centroid = -static_cast<int>(r.centroids.size()) - 1;
-      r.centroids.push_back(
-          (vs[poly[cornerAt[0]]] + vs[poly[cornerAt[1]]] + vs[poly[cornerAt[2]]]) / 3.0);
-      for (int p = 0; p < count; ++p)
-        r.triangles.push_back({poly[p], poly[(p + 1) % count], centroid});
-    }
+    if (ta > tb) std::reverse(out.begin() + static_cast<std::ptrdiff_t>(begin), out.end());
   }
 };
-
-void leafTriangles(FaceResult& r) {
-  r.triangles.clear();
-  for (const auto& leaf : r.leaves)
-    r.triangles.push_back({r.vertexIndex[leaf.corner[0]], r.vertexIndex[leaf.corner[1]],
-                           r.vertexIndex[leaf.corner[2]]});
-  for (const auto& t : r.finals)
-    r.triangles.push_back({r.vertexIndex[t[0]], r.vertexIndex[t[1]], r.vertexIndex[t[2]]});
-}
 
 void concatenate(std::vector<FaceResult>& results, AdaptiveTriangulation& out) {
   std::size_t triangles = 0;
@@ -272,12 +181,13 @@ AdaptiveTriangulation triangulateAdaptiveWithStats(const DisplacementField& ddf,
   const std::vector<SupportVertex> onEdges =
       numberVertices(ddf, ctx.scale, results, out.mesh.vertices);
   if (params.removeTVertices) {
-    const TVertexRemoval removal{&ddf, &ctx, &onEdges, &out.mesh.vertices};
+    const detail::TVertexRemoval removal(ddf, ctx.scale, SortedEdgeChain{&onEdges});
     tbb::enumerable_thread_specific<std::vector<int>> polygons;
-    forFaceBlocks(ddf, params.progress, 0.8, 0.95,
-                  [&](int f) { removal.retriangulate(f, results[f], polygons.local()); });
+    forFaceBlocks(ddf, params.progress, 0.8, 0.95, [&](int f) {
+      removal.retriangulate(f, results[f], out.mesh.vertices, polygons.local());
+    });
   } else {
-    forFaceBlocks(ddf, params.progress, 0.8, 0.95, [&](int f) { leafTriangles(results[f]); });
+    forFaceBlocks(ddf, params.progress, 0.8, 0.95, [&](int f) { detail::leafTriangles(results[f]); });
   }
   concatenate(results, out);
   reportProgress(params.progress, 1.0);

@@ -58,7 +58,7 @@ std::optional<Hit> castRay(const ddf::TriangleMesh& mesh, const std::vector<Vec3
 
 }  // namespace
 
-std::optional<BladeWorkload> bladeWorkload() {
+std::optional<BladeWorkload> bladeWorkload(int resolution) {
   const auto path =
       std::filesystem::path(DDFCAM_SHARED_DATA_DIR) / "meshes" / "turbine-blade-jigsaw.stl";
   if (!std::filesystem::exists(path)) return std::nullopt;
@@ -92,7 +92,7 @@ std::optional<BladeWorkload> bladeWorkload() {
       w.poses.push_back(
           planning::rollPoseAtContact(hit->point, hit->normal, feed, w.radius, w.depth));
   io::LoadPartParams load;
-  load.conversion.resolution = kBladeResolution;
+  load.conversion.resolution = resolution;
   w.ddf = io::loadPart(path, load);
   w.initialHeights = w.ddf.allHeights();
   return w;

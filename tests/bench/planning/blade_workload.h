@@ -14,7 +14,7 @@ namespace ddfcam::bench {
 
 /// @brief The turbine blade converted to a DDF and a 200-triangle roll at 217 poses on it.
 struct BladeWorkload {
-  ddf::DisplacementField ddf;            ///< the blade by io::loadPart at m = kBladeResolution
+  ddf::DisplacementField ddf;            ///< the blade by io::loadPart at the requested m
   ddf::TriangleMesh tool;                ///< makeCylinderTool({radius, width, 50}): 200 triangles
   std::vector<Eigen::Isometry3d> poses;  ///< tool frame -> part frame, along a straight feed
   std::vector<float> initialHeights;     ///< heights before the first pose
@@ -33,6 +33,7 @@ constexpr int kBladeResolution = 10;
 /// along minus the shortest axis, normals the barycentric blend of the area-weighted vertex
 /// normals there; 217 rays evenly spread over the hit span (rays that miss are dropped, so
 /// poses.size() may be slightly below 217). nullopt if the file is missing.
-std::optional<BladeWorkload> bladeWorkload();
+/// @param resolution raster resolution m of the DDF (default kBladeResolution).
+std::optional<BladeWorkload> bladeWorkload(int resolution = kBladeResolution);
 
 }  // namespace ddfcam::bench
