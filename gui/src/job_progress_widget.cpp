@@ -5,6 +5,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
+#include <QTimer>
 #include <QToolButton>
 
 #include <algorithm>
@@ -14,6 +15,16 @@ namespace ddfcam::gui {
 namespace {
 
 constexpr int kBarSteps = 1000;
+constexpr int kRefreshMs = 500;  // the label is refreshed at least twice a second
+// Below these an estimate of the remaining time is mostly noise.
+constexpr double kEstimateAfterS = 1.0;
+constexpr double kEstimateAfterFraction = 0.01;
+
+QString clockText(double seconds) {
+  const int s = static_cast<int>(std::lround(std::max(0.0, seconds)));
+  if (s >= 3600) return QString("%1:%2:%3").arg(s / 3600).arg(s / 60 % 60, 2, 10, QChar('0')).arg(s % 60, 2, 10, QChar('0'));
+  return QString("%1:%2").arg(s / 60).arg(s % 60, 2, 10, QChar('0'));
+}
 
 }  // namespace
 
@@ -41,6 +52,9 @@ JobProgressWidget::JobProgressWidget(JobRunner& runner, QWidget* parent)
     cancel_->setEnabled(false);  // one request is enough; the job stops at its next report
     label_->setText(tr("Cancelling %1...").arg(runner_.title()));
   });
+  refresh_ = new QTimer(this);
+  refresh_->setInterval(kRefreshMs);
+  connect(refresh_, &QTimer::timeout, this, &JobProgressWidget::showProgressText);
   connect(&runner_, &JobRunner::started, this, &JobProgressWidget::onStarted);
   connect(&runner_, &JobRunner::progressChanged, this, &JobProgressWidget::onProgress);
   connect(&runner_, &JobRunner::finished, this, &JobProgressWidget::onFinished);
@@ -53,18 +67,37 @@ JobProgressWidget::JobProgressWidget(JobRunner& runner, QWidget* parent)
 
 void JobProgressWidget::onStarted(const QString& title) {
   clock_.start();
+  title_ = title;
+  fraction_ = 0.0;
   label_->setText(title);
   bar_->setValue(0);
+  refresh_->start();
   cancel_->setEnabled(true);
   show();
 }
 
 void JobProgressWidget::onProgress(double fraction) {
   if (!std::isfinite(fraction)) return;
-  bar_->setValue(static_cast<int>(std::lround(std::clamp(fraction, 0.0, 1.0) * kBarSteps)));
+  fraction_ = std::clamp(fraction, 0.0, 1.0);
+  bar_->setValue(static_cast<int>(std::lround(fraction_ * kBarSteps)));
+  showProgressText();
+}
+
+void JobProgressWidget::showProgressText() {
+  if (!cancel_->isEnabled()) return;  // "Cancelling ..." stays
+  const double seconds = static_cast<double>(clock_.elapsed()) / 1000.0;
+  QString text = tr("%1: %2 %, %3 elapsed")
+                     .arg(title_)
+                     .arg(static_cast<int>(std::floor(100.0 * fraction_)))
+                     .arg(clockText(seconds));
+  // The remaining time at the average rate so far: jobs report evenly spread fractions.
+  if (seconds >= kEstimateAfterS && fraction_ >= kEstimateAfterFraction && fraction_ < 1.0)
+    text += tr(", about %1 left").arg(clockText(seconds * (1.0 - fraction_) / fraction_));
+  label_->setText(text);
 }
 
 void JobProgressWidget::onFinished(const QString& title, JobRunner::Outcome outcome) {
+  refresh_->stop();
   hide();
   switch (outcome) {
     case JobRunner::Outcome::Completed: {

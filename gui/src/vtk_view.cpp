@@ -6,6 +6,7 @@
 
 #include <QLineF>
 #include <QMouseEvent>
+#include <QElapsedTimer>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QWheelEvent>
@@ -230,6 +231,17 @@ void VtkView::initializeGL() {
   // A reparented widget gets a new context; VTK's objects of the old one must go first.
   contextDestroyed_ =
       connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, [this] { releaseGraphics(); });
+  // A software rasterizer (Mesa llvmpipe under Xvfb or a remote desktop) pays for 4x MSAA in
+  // fill rate, which halved the frame rate of a live simulation; FXAA smooths the edges at a
+  // fraction of that cost. Decided before VTK creates its framebuffers.
+  const auto* name = reinterpret_cast<const char*>(context()->functions()->glGetString(GL_RENDERER));
+  const QString renderer = name ? QString::fromLatin1(name) : QString();
+  softwareRendering_ = renderer.contains("llvmpipe") || renderer.contains("softpipe") ||
+                       renderer.contains("swrast") || renderer.contains("Software");
+  if (softwareRendering_) {
+    renderWindow_->SetMultiSamples(0);
+    renderer_->UseFXAAOn();
+  }
   renderWindow_->SetReadyForRendering(true);
   renderWindow_->InitializeFromCurrentContext();
   renderWindow_->SetReadyForRendering(false);
@@ -251,10 +263,14 @@ void VtkView::setRenderSize(int devicePixelsX, int devicePixelsY) {
 
 void VtkView::paintGL() {
   if (!glReady_) return;
+  QElapsedTimer clock;
+  clock.start();
   renderWindow_->SetReadyForRendering(true);
   renderWindow_->Render();
   renderWindow_->SetReadyForRendering(false);
   blitToWidget();
+  ++renderedFrames_;
+  renderSeconds_ += clock.nsecsElapsed() * 1e-9;
 }
 
 void VtkView::blitToWidget() {

@@ -7,6 +7,7 @@
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QLabel>
 #include <QProgressBar>
 #include <QSignalSpy>
 #include <QThread>
@@ -63,6 +64,7 @@ class JobRunnerTest : public QObject {
   void secondStartWhileRunningIsRefused();
   void destructorCancelsAndJoins();
   void widgetShowsAndCancelsJob();
+  void widgetShowsElapsedAndRemainingTime();
   void widgetReportsDoneAndFailed();
 
  private:
@@ -238,6 +240,34 @@ void JobRunnerTest::widgetShowsAndCancelsJob() {
   QVERIFY(widget->isHidden());
   QCOMPARE(messages.count(), 1);
   QCOMPARE(messages.last().at(0).toString(), QString("Cancelled: Simulate path 'demo'"));
+}
+
+void JobRunnerTest::widgetShowsElapsedAndRemainingTime() {
+  QWidget statusBar;
+  JobRunner runner(recorder());
+  auto* widget = new JobProgressWidget(runner, &statusBar);
+  statusBar.show();
+  // Work that reaches a quarter after 1.2 s and then waits to be cancelled: at the average
+  // rate so far, three times the elapsed time remains.
+  QVERIFY(runner.start("long", [](const ddfcam::ProgressCallback& p) {
+    const auto start = std::chrono::steady_clock::now();
+    while (std::chrono::steady_clock::now() - start < std::chrono::milliseconds(1200))
+      if (!p(0.0)) throw ddfcam::Cancelled();
+    while (p(0.25)) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    throw ddfcam::Cancelled();
+    return std::function<void()>([] {});
+  }));
+  auto* label = widget->findChild<QLabel*>("jobTitleLabel");
+  QTRY_VERIFY_WITH_TIMEOUT(label->text().contains("25 %"), 5000);
+  QTest::qWait(600);  // the refresh timer moves the elapsed time on without new progress
+  const QString text = label->text();
+  QVERIFY2(text.startsWith("long: 25 %, 0:0") && text.contains(" elapsed, about 0:0"),
+           qPrintable(text));
+  // "about m:ss left" is three times the elapsed seconds (1.2 s to 1.9 s: 4 to 6 s).
+  const int left = text.section("about 0:0", 1).left(1).toInt();
+  QVERIFY2(left >= 3 && left <= 6, qPrintable(text));
+  runner.cancel();
+  QVERIFY(runner.waitForFinished(5000));
 }
 
 void JobRunnerTest::widgetReportsDoneAndFailed() {

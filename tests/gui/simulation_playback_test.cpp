@@ -6,6 +6,8 @@
 #include "simulation_fixture.h"
 #include "workbench_test.h"
 
+#include <ddfcam/ddf/adaptive_triangulation.h>
+#include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/document_command.h>
 #include <ddfcam/gui/panels/simulation_panel.h>
@@ -18,7 +20,9 @@
 
 #include <QDockWidget>
 #include <QLabel>
+#include <QElapsedTimer>
 #include <QListWidget>
+#include <QSlider>
 #include <QUndoStack>
 #include <QtTest/QtTest>
 
@@ -26,6 +30,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 using ddfcam::gui::SimulationPlayback;
 using ddfcam::planning::Tool;
@@ -73,6 +78,8 @@ class SimulationPlaybackTest : public ddfcam::test::WorkbenchTest {
   void pauseAndStepAdvanceOnePose();
   void cancelLeavesTheDocumentUnchanged();
   void collisionsAreListedAndMarked();
+  void timelineAndEventsSeekToTheStateOfThePose();
+  void pauseAndStepActWithin100MsAndRatesAreShown();
 };
 
 void SimulationPlaybackTest::playToTheEndCutsTheGrooveAndUndoRestores() {
@@ -160,7 +167,7 @@ void SimulationPlaybackTest::pauseAndStepAdvanceOnePose() {
   QVERIFY(toolOverlayAt(1));
   playback().setPosesPerSecond(30);
   QVERIFY(playback().play());
-  QTRY_VERIFY_WITH_TIMEOUT(playback().simulation()->nextPose() >= 5, 5'000);
+  QTRY_VERIFY_WITH_TIMEOUT(playback().posesCut() >= 5, 5'000);
   playback().pause();
   QVERIFY(!playback().isPlaying());
   const int paused = playback().simulation()->nextPose();
@@ -233,12 +240,106 @@ void SimulationPlaybackTest::collisionsAreListedAndMarked() {
   auto* panel = f_.window->findChild<ddfcam::gui::SimulationPanel*>();
   QVERIFY(raisePanel("simulation"));
   ddfcam::test::dumpFrame(panel->grab().toImage(), "playback_panel");
+  ddfcam::test::dumpFrame(playback().grab().toImage(), "playback_controls");
   playback().cancel();
   // Without a non-cutting part nothing collides.
   loadDemo();
   for (int i = 0; i < 8; ++i) QVERIFY(playback().step());
   QVERIFY(playback().simulation()->report().collisions.empty());
   QCOMPARE(list->count(), 0);
+  playback().cancel();
+}
+
+// Heights after planning::simulatePath of the first @p poses poses of @p path on @p stock.
+static std::vector<float> headHeights(const ddfcam::test::SmallDemo& demo, int poses) {
+  ddfcam::planning::ToolPath head = demo.project.paths[0];
+  head.poses.resize(static_cast<std::size_t>(poses));
+  std::erase_if(head.passStarts, [&](int s) { return s >= poses; });
+  ddfcam::ddf::DisplacementField copy = *demo.project.part;
+  if (poses > 0) ddfcam::planning::simulatePath(copy, demo.project.tools[0], head);
+  return copy.allHeights();
+}
+
+void SimulationPlaybackTest::timelineAndEventsSeekToTheStateOfThePose() {
+  auto demo = ddfcam::test::smallDemo();
+  demo.project.tools[0].holderRadiusMm = 4.9;  // flanges that collide (see above)
+  demo.project.tools[0].holderLengthMm = 1.0;
+  demo_ = demo;
+  load(demo.project);
+  playback().setPathIndex(0);
+  for (int i = 0; i < 12; ++i) QVERIFY(playback().step());
+  auto* timeline = f_.window->findChild<QSlider*>("timelineSlider");
+  QCOMPARE(timeline->maximum(), 37);
+  QCOMPARE(timeline->value(), 12);
+  // Dragging the timeline back: the state is that of cutting the first 4 poses only (the
+  // recorded cut is undone), bit for bit, and the tool stands at pose 3.
+  timeline->setValue(4);
+  QCOMPARE(playback().simulation()->nextPose(), 4);
+  QCOMPARE(playback().simulation()->workpiece().allHeights(), headHeights(demo_, 4));
+  QVERIFY(toolOverlayAt(3));
+  // The surface shown is the live triangulation of that state: a fresh ch. 7 triangulation of
+  // the same heights at the playback's bound (PlaybackParams: 2e-4 of the support's diagonal)
+  // has as many triangles.
+  ddfcam::ddf::DisplacementField state = *demo_.project.part;
+  state.allHeights() = headHeights(demo_, 4);
+  const auto support = ddfcam::ddf::extractSupportMesh(state);
+  const auto [lo, hi] = support.bounds();
+  ddfcam::ddf::AdaptiveTriangulationParams bound;
+  bound.epsMm = 2e-4 * (hi - lo).norm();
+  QCOMPARE(scene().cellCount(ddfcam::gui::Layer::Surface),
+           static_cast<long long>(ddfcam::ddf::triangulateAdaptive(state, bound).triangles.size()));
+  // Forward again by the timeline: re-cut from pose 4.
+  timeline->setValue(9);
+  QCOMPARE(playback().simulation()->workpiece().allHeights(), headHeights(demo_, 9));
+  // A click on a listed collision moves the timeline to just after its pose.
+  timeline->setValue(12);
+  auto* list = f_.window->findChild<QListWidget*>("collisionList");
+  QVERIFY(list->count() > 0);
+  QListWidgetItem* first = list->item(0);
+  const int pose = first->data(Qt::UserRole).toInt();
+  const QRect rect = list->visualItemRect(first);
+  QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, rect.center());
+  QCOMPARE(playback().simulation()->nextPose(), pose + 1);
+  QCOMPARE(timeline->value(), pose + 1);
+  QVERIFY(toolOverlayAt(pose));
+  QCOMPARE(playback().simulation()->workpiece().allHeights(), headHeights(demo_, pose + 1));
+  // Nothing reached the document.
+  QCOMPARE(project().part->allHeights(), demo_.project.part->allHeights());
+  playback().cancel();
+}
+
+void SimulationPlaybackTest::pauseAndStepActWithin100MsAndRatesAreShown() {
+  loadDemo({12.0, 16.0, 20.0, 24.0, 28.0});
+  playback().setPosesPerSecond(30);
+  QVERIFY(playback().play());
+  QTest::qWait(700);
+  QVERIFY(playback().isPlaying());
+  // The display follows at its own rate: frames were shown while the simulation ran.
+  QVERIFY2(playback().framesPerSecond() > 5.0, qPrintable(QString::number(playback().framesPerSecond())));
+  auto* rates = f_.window->findChild<QLabel*>("playbackRates");
+  QVERIFY2(rates->text().startsWith("Simulating "), qPrintable(rates->text()));
+  QVERIFY2(rates->text().contains("(set: 30 poses/s)"), qPrintable(rates->text()));
+  auto* status = f_.window->findChild<QLabel*>("playbackStatus");
+  QVERIFY2(status->text().contains("elapsed") && status->text().contains("left"),
+           qPrintable(status->text()));
+  QElapsedTimer clock;
+  clock.start();
+  playback().pause();
+  const qint64 pauseMs = clock.elapsed();
+  QVERIFY(!playback().isPlaying());
+  const int paused = playback().simulation()->nextPose();
+  QCOMPARE(playback().posesCut(), paused);
+  clock.restart();
+  QVERIFY(playback().step());
+  const qint64 stepMs = clock.elapsed();
+  std::printf("playback: pause %lld ms, step %lld ms, %.1f frames/s shown\n",
+              static_cast<long long>(pauseMs), static_cast<long long>(stepMs),
+              playback().framesPerSecond());
+  QVERIFY2(pauseMs < 100, qPrintable(QString::number(pauseMs)));
+  QVERIFY2(stepMs < 100, qPrintable(QString::number(stepMs)));
+  QCOMPARE(playback().simulation()->nextPose(), paused + 1);
+  // Playing at 30 poses/s for 0.7 s cannot have cut more than about 30 x 0.7 + 3 poses.
+  QVERIFY2(paused <= 25, qPrintable(QString::number(paused)));
   playback().cancel();
 }
 

@@ -136,7 +136,9 @@ bool SimulationPanel::simulatePath(int index) {
     const bool preston = options_->removalModel() == RemovalModel::Preston;
     const planning::GrindingSimulationParams grinding = options_->grindingParams();
     const planning::PrestonParams prestonParams = options_->prestonParams();
-    const QString title = tr("Simulate path '%1'").arg(QString::fromStdString(path.name));
+    const QString title = tr("Simulate path '%1' (%2 poses)")
+                              .arg(QString::fromStdString(path.name))
+                              .arg(path.poses.size());
     started = startJob(title, [=, this](const ProgressCallback& whole) {
       planning::PathCoverageParams coverage;
       coverage.progress = subProgress(whole, 0.0, 0.2);

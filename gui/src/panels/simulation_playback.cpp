@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// ddfcam gui: SimulationPlayback.
+// ddfcam gui: SimulationPlayback: controls, the live simulation's lifetime, commit and cancel.
 #include <ddfcam/gui/panels/simulation_playback.h>
 
 #include <ddfcam/error.h>
@@ -18,6 +18,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalBlocker>
+#include <QSlider>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -34,14 +35,59 @@ QPushButton* makeButton(const QString& text, const char* name, QWidget* parent) 
   return button;
 }
 
-bool isColliding(const planning::GrindingReport& report, int pose) {
-  return std::ranges::binary_search(report.collisions, pose, {}, &planning::CollisionHit::pose);
+QListWidget* makeList(const char* name, int height, QWidget* parent) {
+  auto* list = new QListWidget(parent);
+  list->setObjectName(name);
+  list->setMaximumHeight(height);
+  return list;
+}
+
+// Bounding-box diagonal of the support, mm: the display bound scales with the part.
+double supportDiagonalMm(const ddf::DisplacementField& ddf) {
+  if (ddf.vertexCount() == 0) return 1.0;
+  ddf::Vec3 lo = ddf.position(0), hi = lo;
+  for (int v = 1; v < ddf.vertexCount(); ++v) {
+    lo = lo.cwiseMin(ddf.position(v));
+    hi = hi.cwiseMax(ddf.position(v));
+  }
+  return std::max((hi - lo).norm(), 1e-3);
 }
 
 }  // namespace
 
 SimulationPlayback::SimulationPlayback(Workbench& workbench, PlaybackParams params, QWidget* parent)
     : QWidget(parent), workbench_(workbench), params_(params) {
+  buildControls();
+  timer_ = new QTimer(this);
+  timer_->setInterval(params_.tickMs);
+  connect(timer_, &QTimer::timeout, this, &SimulationPlayback::tick);
+  connect(play_, &QPushButton::clicked, this, [this] { play(); });
+  connect(pause_, &QPushButton::clicked, this, &SimulationPlayback::pause);
+  connect(step_, &QPushButton::clicked, this, [this] { step(); });
+  connect(apply_, &QPushButton::clicked, this, [this] { apply(); });
+  connect(cancel_, &QPushButton::clicked, this, &SimulationPlayback::cancel);
+  connect(speed_, &QComboBox::currentIndexChanged, this,
+          [this] { setPosesPerSecond(speed_->currentData().toDouble()); });
+  connect(timeline_, &QSlider::valueChanged, this, [this](int value) {
+    if (isActive() && value != shownPosesCut_) seek(value);
+  });
+  // A listed event moves the timeline to the state just after its pose (tool drawn there).
+  for (QListWidget* list : {collisions_, vConvexity_})
+    connect(list, &QListWidget::itemClicked, this,
+            [this](QListWidgetItem* item) { seek(item->data(Qt::UserRole).toInt() + 1); });
+  connect(&workbench.document, &Document::changed, this, [this](Changes what) {
+    // The playback cuts a copy of what the document held at begin(): an edit makes it stale.
+    if (isActive() && !committing_ &&
+        (what & (Change::Part | Change::Heights | Change::Tools | Change::Paths)))
+      cancel();
+  });
+  clock_.start();
+  updateControls();
+}
+
+SimulationPlayback::~SimulationPlayback() = default;
+
+void SimulationPlayback::buildControls() {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   auto* buttons = new QGridLayout;
@@ -62,63 +108,56 @@ SimulationPlayback::SimulationPlayback(Workbench& workbench, PlaybackParams para
   buttons->addWidget(apply_, 2, 0);
   buttons->addWidget(cancel_, 2, 2);
   layout->addLayout(buttons);
+  timeline_ = new QSlider(Qt::Horizontal, this);
+  timeline_->setObjectName("timelineSlider");
+  timeline_->setToolTip(tr("Timeline: drag to show the part after any pose"));
+  layout->addWidget(timeline_);
   progress_ = new QProgressBar(this);
   progress_->setObjectName("playbackProgress");
   progress_->setRange(0, 1000);
   layout->addWidget(progress_);
-  status_ = new QLabel(this);
-  status_->setObjectName("playbackStatus");
-  layout->addWidget(status_);
-  collisionLabel_ = new QLabel(this);
-  collisionLabel_->setObjectName("collisionLabel");
-  layout->addWidget(collisionLabel_);
-  collisions_ = new QListWidget(this);
-  collisions_->setObjectName("collisionList");
-  collisions_->setMaximumHeight(70);
+  for (auto [label, name] : {std::pair{&status_, "playbackStatus"}, {&rates_, "playbackRates"},
+                             {&collisionLabel_, "collisionLabel"}}) {
+    *label = new QLabel(this);
+    (*label)->setObjectName(name);
+    (*label)->setWordWrap(true);
+    layout->addWidget(*label);
+  }
+  layout->addWidget(new QLabel(tr("Collisions (click: show the pose)"), this));
+  collisions_ = makeList("collisionList", 70, this);
   layout->addWidget(collisions_);
+  layout->addWidget(new QLabel(tr("V-convexity violations (click: show the pose)"), this));
+  vConvexity_ = makeList("vConvexityList", 70, this);
+  layout->addWidget(vConvexity_);
   layout->addWidget(new QLabel(tr("Removed volume per pass"), this));
-  removal_ = new QListWidget(this);
-  removal_->setObjectName("removalList");
-  removal_->setMaximumHeight(90);
+  removal_ = makeList("removalList", 90, this);
   layout->addWidget(removal_);
-
-  timer_ = new QTimer(this);
-  timer_->setInterval(params_.tickMs);
-  connect(timer_, &QTimer::timeout, this, &SimulationPlayback::tick);
-  connect(play_, &QPushButton::clicked, this, [this] { play(); });
-  connect(pause_, &QPushButton::clicked, this, &SimulationPlayback::pause);
-  connect(step_, &QPushButton::clicked, this, [this] { step(); });
-  connect(apply_, &QPushButton::clicked, this, [this] { apply(); });
-  connect(cancel_, &QPushButton::clicked, this, &SimulationPlayback::cancel);
-  connect(speed_, &QComboBox::currentIndexChanged, this,
-          [this] { setPosesPerSecond(speed_->currentData().toDouble()); });
-  connect(&workbench.document, &Document::changed, this, [this](Changes what) {
-    // The playback cuts a copy of what the document held at begin(): an edit makes it stale.
-    if (isActive() && !committing_ &&
-        (what & (Change::Part | Change::Heights | Change::Tools | Change::Paths)))
-      cancel();
-  });
-  updateControls();
 }
 
-SimulationPlayback::~SimulationPlayback() = default;
-
 bool SimulationPlayback::isPlaying() const {
-  return timer_->isActive();
+  return live_ && live_->isPlaying();
+}
+
+const planning::GrindingSimulation* SimulationPlayback::simulation() const {
+  return live_ && !live_->isPlaying() ? &live_->simulation() : nullptr;
+}
+
+int SimulationPlayback::posesCut() const {
+  return live_ ? live_->latestFrame()->posesCut : -1;
+}
+
+int SimulationPlayback::shownPose() const {
+  return live_ ? std::max(0, shownPosesCut_ - 1) : -1;
 }
 
 void SimulationPlayback::setPosesPerSecond(double posesPerSecond) {
   posesPerSecond_ = posesPerSecond;
+  if (live_) live_->setPosesPerSecond(posesPerSecond);
   const int index = speed_->findData(static_cast<int>(std::lround(std::max(0.0, posesPerSecond))));
   if (index >= 0 && index != speed_->currentIndex()) {
     const QSignalBlocker block(speed_);
     speed_->setCurrentIndex(index);
   }
-}
-
-int SimulationPlayback::shownPose() const {
-  if (!simulation_) return -1;
-  return std::max(0, simulation_->nextPose() - 1);
 }
 
 bool SimulationPlayback::begin(int index) {
@@ -133,22 +172,35 @@ bool SimulationPlayback::begin(int index) {
       throw InvalidInput("path '" + path.name + "' refers to a missing tool");
     if (path.poses.empty()) throw InvalidInput("path '" + path.name + "' has no poses");
     tool_ = p.tools[static_cast<std::size_t>(path.tool)];
-    simulation_ =
-        std::make_unique<planning::GrindingSimulation>(*p.part, planning::toolMeshes(tool_), path,
-                                                      simulationParams_);
-    simulatedPath_ = index;
-    credit_ = 0.0;
-    secondsPerPose_ = redrawSeconds_ = 0.0;
-    sinceRedraw_.invalidate();
-    updateView(true);
+    path_ = path;
+    planning::LiveSimulationParams live;
+    live.simulation = simulationParams_;
+    live.displayEpsMm = params_.displayEpsFraction * supportDiagonalMm(*p.part);
+    live.posesPerSecond = posesPerSecond_;
+    live.frameIntervalS = params_.frameIntervalMs / 1000.0;
+    live_ = std::make_unique<planning::LiveSimulation>(*p.part, planning::toolMeshes(tool_), path,
+                                                       live);
+    surface_ = std::make_unique<LiveSurfacePolyData>();
+    SceneGeometry scene;
+    scene.surface = surface_->polyData();
+    if (const PartGeometry* shown = workbench_.partView.geometry()) {
+      scene.support = shown->scene.support;  // the support and the stubbles do not change
+      scene.stubbles = shown->scene.stubbles;
+    }
+    workbench_.partView.scene().setGeometry(scene);
+    const QSignalBlocker block(timeline_);
+    timeline_->setRange(0, static_cast<int>(path.poses.size()));
+    shownSerial_ = 0;
+    frameTimesMs_.clear();
+    showLatest();
   });
 }
 
 bool SimulationPlayback::play() {
   if (!isActive() && !begin(pathIndex_)) return false;
-  if (simulation_->finished()) return false;
-  credit_ = 0.0;
-  sinceTick_.start();
+  live_->setPosesPerSecond(posesPerSecond_);
+  if (!live_->play()) return false;
+  frameTimesMs_.clear();
   timer_->start();
   updateControls();
   return true;
@@ -156,47 +208,33 @@ bool SimulationPlayback::play() {
 
 void SimulationPlayback::pause() {
   timer_->stop();
-  if (isActive()) updateView(true);
+  if (!isActive()) return;
+  live_->pause();
+  if (checkWorker()) showLatest();
 }
 
 bool SimulationPlayback::step() {
   if (!isActive() && !begin(pathIndex_)) return false;
   timer_->stop();
-  if (simulation_->finished()) return false;
-  if (!runUserAction(workbench_.reportError, tr("Step simulation"), [&] { cut(1); })) {
+  bool cut = false;
+  if (!runUserAction(workbench_.reportError, tr("Step simulation"),
+                     [&] { cut = live_->step(); })) {
     cancel();
     return false;
   }
-  updateView(true);
+  showLatest();
   finishIfDone();
-  return true;
+  return cut;
 }
 
-int SimulationPlayback::batchSize(double seconds) {
-  const int remaining =
-      static_cast<int>(simulation_->path().poses.size()) - simulation_->nextPose();
-  // The budget caps a frame's cutting time; before the first measurement, one pose.
-  const int budget = secondsPerPose_ > 0.0
-                         ? std::max(1, static_cast<int>(params_.cutBudgetS / secondsPerPose_))
-                         : 1;
-  int wanted = budget;
-  if (posesPerSecond_ > 0.0) {
-    credit_ += posesPerSecond_ * seconds;
-    wanted = static_cast<int>(credit_);
-  }
-  const int n = std::min({wanted, budget, remaining});
-  // Poses the budget could not cut are dropped, not owed: a slow part plays slower.
-  if (posesPerSecond_ > 0.0) credit_ = std::min(credit_ - n, 1.0);
-  return std::max(n, 0);
-}
-
-void SimulationPlayback::cut(int poses) {
-  const double before = simulation_->report().seconds;
-  const int done = simulation_->advance(poses);
-  if (done > 0) {
-    const double perPose = (simulation_->report().seconds - before) / done;
-    secondsPerPose_ = secondsPerPose_ > 0.0 ? 0.5 * (secondsPerPose_ + perPose) : perPose;
-  }
+bool SimulationPlayback::seek(int posesCut) {
+  if (!isActive()) return false;
+  timer_->stop();
+  const int total = live_->latestFrame()->totalPoses;
+  const bool ok = runUserAction(workbench_.reportError, tr("Move the timeline"),
+                                [&] { live_->seek(std::clamp(posesCut, 0, total)); });
+  showLatest();
+  return ok;
 }
 
 void SimulationPlayback::tick() {
@@ -204,100 +242,49 @@ void SimulationPlayback::tick() {
     timer_->stop();
     return;
   }
-  const double seconds = sinceTick_.restart() / 1000.0;
-  const int n = batchSize(seconds);
-  if (n == 0) return;
-  // A failed cut is reported once and ends the playback (the next tick would fail again).
-  if (!runUserAction(workbench_.reportError, tr("Play simulation"), [&] { cut(n); })) {
-    cancel();
-    return;
+  if (!checkWorker()) return;
+  showLatest();
+  if (!live_->isPlaying()) {
+    timer_->stop();
+    showLatest();  // the worker's final frame
+    finishIfDone();
+    updateControls();
   }
-  updateView(false);
-  finishIfDone();
+}
+
+bool SimulationPlayback::checkWorker() {
+  if (std::exception_ptr error = live_->takeError()) {
+    // A failed cut is reported once and ends the playback (the next pose would fail again).
+    runUserAction(workbench_.reportError, tr("Play simulation"),
+                  [&] { std::rethrow_exception(error); });
+    cancel();
+    return false;
+  }
+  return true;
 }
 
 void SimulationPlayback::finishIfDone() {
-  if (simulation_ && simulation_->finished()) {
-    timer_->stop();
-    apply();
-  }
-}
-
-void SimulationPlayback::updateView(bool forceSurface) {
-  const planning::GrindingReport& report = simulation_->report();
-  const planning::ToolPath& path = simulation_->path();
-  PartScene& scene = workbench_.partView.scene();
-  const bool redraw = forceSurface || !sinceRedraw_.isValid() ||
-                      sinceRedraw_.elapsed() / 1000.0 >= params_.redrawCostFactor * redrawSeconds_;
-  if (redraw) {
-    QElapsedTimer clock;
-    clock.start();
-    scene.setGeometry(buildPartGeometry(simulation_->workpiece(), DisplayParams{}).scene);
-    redrawSeconds_ = clock.elapsed() / 1000.0;
-    sinceRedraw_.start();
-  }
-  const int pose = shownPose();
-  showToolOverlay(scene, tool_, path.poses[static_cast<std::size_t>(pose)].pose,
-                  isColliding(report, pose));
-  std::vector<Eigen::Vector3d> marks;
-  for (const planning::CollisionHit& hit : report.collisions)
-    marks.push_back(path.poses[static_cast<std::size_t>(hit.pose)].contact);
-  showCollisionMarkers(scene, marks);
-  if (collisions_->count() != static_cast<int>(report.collisions.size())) {
-    collisions_->clear();
-    for (const planning::CollisionHit& hit : report.collisions)
-      collisions_->addItem(tr("pose %1: %2 points").arg(hit.pose).arg(hit.stubbles));
-  }
-  removal_->clear();
-  for (std::size_t i = 0; i < report.passes.size(); ++i)
-    removal_->addItem(tr("pass %1: %2 mm³ (%3 poses)")
-                          .arg(i + 1)
-                          .arg(report.passes[i].removedVolumeMm3, 0, 'f', 4)
-                          .arg(report.passes[i].poseCount));
-  workbench_.partView.view().requestRender();
-  updateControls();
-}
-
-void SimulationPlayback::updateControls() {
-  const bool active = isActive();
-  const bool playing = isPlaying();
-  const int total = active ? static_cast<int>(simulation_->path().poses.size()) : 0;
-  const int done = active ? simulation_->nextPose() : 0;
-  play_->setEnabled(!playing && (!active || !simulation_->finished()));
-  pause_->setEnabled(playing);
-  step_->setEnabled(!active || !simulation_->finished());
-  apply_->setEnabled(active && done > 0);
-  cancel_->setEnabled(active);
-  progress_->setValue(total > 0 ? static_cast<int>(1000.0 * done / total) : 0);
-  if (!active) {
-    status_->setText(tr("No playback"));
-    collisionLabel_->setText({});
-    return;
-  }
-  const planning::GrindingReport& report = simulation_->report();
-  status_->setText(tr("Pose %1 of %2, removed %3 mm³")
-                       .arg(done)
-                       .arg(total)
-                       .arg(report.removedVolumeMm3, 0, 'f', 4));
-  collisionLabel_->setText(tr("Collisions: %1 poses; V-convexity violations: %2 poses")
-                               .arg(report.collisions.size())
-                               .arg(report.vConvexity.size()));
+  if (live_ && live_->finished() && posesCut() == live_->latestFrame()->totalPoses) apply();
 }
 
 bool SimulationPlayback::apply() {
-  if (!isActive() || simulation_->nextPose() == 0) return false;
+  if (!isActive()) return false;
   timer_->stop();
+  live_->pause();
+  if (live_->simulation().nextPose() == 0) return false;
   // Take the simulation first: the push's change signal must find no playback to cancel.
-  std::unique_ptr<planning::GrindingSimulation> simulation = std::move(simulation_);
-  const planning::ToolPath& path = simulation->path();
-  const int done = simulation->nextPose(), total = static_cast<int>(path.poses.size());
+  std::unique_ptr<planning::LiveSimulation> live = std::move(live_);
+  surface_.reset();
+  const planning::GrindingSimulation& simulation = live->simulation();
+  const planning::ToolPath& path = simulation.path();
+  const int done = simulation.nextPose(), total = static_cast<int>(path.poses.size());
   std::string name = planning::afterPathStateName(path.name);
   if (done < total)
     name += " (poses 1-" + std::to_string(done) + " of " + std::to_string(total) + ")";
   const QString title = tr("Play simulation of '%1'").arg(QString::fromStdString(path.name));
   committing_ = true;
   const bool ok = runUserAction(workbench_.reportError, title, [&] {
-    const std::vector<float>& heights = simulation->workpiece().allHeights();
+    const std::vector<float>& heights = simulation.workpiece().allHeights();
     workbench_.document.push(std::make_unique<SetHeightsCommand>(
         workbench_.document, title, heights, planning::SimulationState{name, heights}));
   });
@@ -311,8 +298,9 @@ bool SimulationPlayback::apply() {
 
 void SimulationPlayback::cancel() {
   timer_->stop();
-  if (!simulation_) return;
-  simulation_.reset();
+  if (!live_) return;
+  live_.reset();
+  surface_.reset();
   restoreDocumentSurface();
   updateControls();
   emit ended(false);

@@ -3,6 +3,7 @@
 #include <ddfcam/ddf/crust_hash.h>
 #include <ddfcam/ddf/raster_normal.h>
 #include <ddfcam/error.h>
+#include <ddfcam/planning/simulation/column_volume.h>
 #include <ddfcam/planning/simulation/workpiece.h>
 
 #include <cmath>
@@ -70,29 +71,6 @@ StockWorkpiece workpieceFromStockMesh(const ddf::DisplacementField& goal,
   return result;
 }
 
-}  // namespace ddfcam::planning
-
-namespace ddfcam::planning {
-namespace {
-
-double det3(const Vec3& a, const Vec3& b, const Vec3& c) {
-  return a.cross(b).dot(c);
-}
-
-// Raster sub-triangles of the face incident to (i, k): 6 inside, 3 on an edge, 1 or 2 at a corner.
-int incidentTriangles(int n, int i, int k) {
-  static constexpr int kRing[6][2] = {{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
-  auto valid = [n](int ii, int kk) { return ii >= 0 && kk >= 0 && ii + kk <= n; };
-  int count = 0;
-  for (int a = 0; a < 6; ++a) {
-    const int b = (a + 1) % 6;
-    count += valid(i + kRing[a][0], k + kRing[a][1]) && valid(i + kRing[b][0], k + kRing[b][1]);
-  }
-  return count;
-}
-
-}  // namespace
-
 double volumeBetween(const ddf::DisplacementField& field, const std::vector<float>& before,
                      const std::vector<float>& after) {
   if (before.size() != field.allHeights().size() || after.size() != before.size())
@@ -100,28 +78,14 @@ double volumeBetween(const ddf::DisplacementField& field, const std::vector<floa
                        " and " + std::to_string(after.size()) + " values for a field of " +
                        std::to_string(field.allHeights().size()) + " heights");
   const int n = field.raster().steps();
-  // Parameter area of a raster sub-triangle is 1 / (2 n^2); each corner takes a third.
-  const double nodal = 1.0 / (6.0 * n * n);
   double volume = 0.0;
   for (int f = 0; f < field.faceCount(); ++f) {
-    const auto& fv = field.faceVertices(f);
-    const Vec3 e1 = field.position(fv[1]) - field.position(fv[0]);
-    const Vec3 e2 = field.position(fv[2]) - field.position(fv[0]);
-    const Vec3 f1 = field.vector(fv[1]) - field.vector(fv[0]);
-    const Vec3 f2 = field.vector(fv[2]) - field.vector(fv[0]);
+    const FaceColumnVolume terms(field, f);
     const std::size_t base = static_cast<std::size_t>(f) * field.pointsPerFace();
     for (int k = 0; k <= n; ++k)
       for (int i = 0; i <= n - k; ++i) {
         const std::size_t at = base + field.raster().index(i, k);
-        const double h0 = before[at], h1 = after[at];
-        if (h0 == h1) continue;
-        const Vec3 v = field.vectorAt(f, field.rasterBary(i, k));
-        // det(e1 + h f1, e2 + h f2, v) = j0 + j1 h + j2 h^2, integrated over [h1, h0].
-        const double j0 = det3(e1, e2, v), j1 = det3(f1, e2, v) + det3(e1, f2, v),
-                     j2 = det3(f1, f2, v);
-        const double column = j0 * (h0 - h1) + j1 * (h0 * h0 - h1 * h1) / 2.0 +
-                              j2 * (h0 * h0 * h0 - h1 * h1 * h1) / 3.0;
-        volume += nodal * incidentTriangles(n, i, k) * column;
+        if (before[at] != after[at]) volume += terms.column(i, k, before[at], after[at]);
       }
   }
   return volume;

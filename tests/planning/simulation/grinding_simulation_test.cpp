@@ -14,6 +14,8 @@
 #include <limits>
 #include <numbers>
 
+#include "../../support/zmap.h"
+
 namespace ddfcam::planning {
 namespace {
 
@@ -36,18 +38,7 @@ ToolPath namedPath(const char* name) {
   return p;
 }
 
-/// z-map: planar support z = 0 over [0, sx] x [0, sy], vectors (0, 0, L), surface z = 0, so a
-/// height h is z = h L mm.
-ddf::DisplacementField zmap(double sx, double sy, int cx, int cy, int m, double lengthMm) {
-  return ddf::planePatch({.origin = {0.0, 0.0},
-                          .size = {sx, sy},
-                          .cellsX = cx,
-                          .cellsY = cy,
-                          .m = m,
-                          .planeZMm = 0.0,
-                          .vectorLengthMm = lengthMm})
-      .ddf;
-}
+using test::zmap;
 
 /// Calls fn(x, y, z) for every stored raster point of a z-map with vector length L.
 template <class Fn>

@@ -10,6 +10,7 @@
 
 class QLabel;
 class QProgressBar;
+class QTimer;
 class QToolButton;
 
 namespace ddfcam::gui {
@@ -33,12 +34,16 @@ class JobProgressWidget : public QWidget {
   void onStarted(const QString& title);
   void onProgress(double fraction);
   void onFinished(const QString& title, JobRunner::Outcome outcome);
+  void showProgressText();
 
   JobRunner& runner_;
   QLabel* label_ = nullptr;
   QProgressBar* bar_ = nullptr;
   QToolButton* cancel_ = nullptr;
   QElapsedTimer clock_;
+  QTimer* refresh_ = nullptr;  ///< keeps the elapsed time moving between progress reports
+  QString title_;
+  double fraction_ = 0.0;
 };
 
 }  // namespace ddfcam::gui

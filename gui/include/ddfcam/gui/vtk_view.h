@@ -2,6 +2,8 @@
 // ddfcam gui: a QOpenGLWidget hosting a VTK renderer (vtkGenericOpenGLRenderWindow, no QVTK).
 #pragma once
 
+#include <cstdint>
+
 #include <Eigen/Core>
 
 #include <QColor>
@@ -67,6 +69,13 @@ class VtkView : public QOpenGLWidget {
   void viewFrom(ViewDirection direction);
   /// @brief Schedules a repaint (VTK renders inside paintGL).
   void requestRender();
+  /// @brief Frames rendered into the widget so far (paintGL calls that rendered): a display
+  /// rate is the difference over a time span.
+  std::uint64_t renderedFrames() const { return renderedFrames_; }
+  /// @brief Wall time spent rendering those frames, s (the cost of a frame is its share).
+  double renderSeconds() const { return renderSeconds_; }
+  /// @brief True when the GL context is a software rasterizer (then FXAA replaces 4x MSAA).
+  bool softwareRendering() const { return softwareRendering_; }
   /// @brief Renders a frame now and returns it (device pixels, opaque).
   QImage renderImage();
   /// @brief Renders one frame offscreen at exactly @p devicePixels (e.g. 1920 x 1080 for a
@@ -118,6 +127,9 @@ class VtkView : public QOpenGLWidget {
   void setRenderSize(int devicePixelsX, int devicePixelsY);
   QImage readDisplayFramebuffer(int width, int height);
 
+  std::uint64_t renderedFrames_ = 0;
+  double renderSeconds_ = 0.0;
+  bool softwareRendering_ = false;
   vtkSmartPointer<vtkGenericOpenGLRenderWindow> renderWindow_;
   vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor_;
   vtkSmartPointer<vtkRenderer> renderer_;

@@ -1,15 +1,20 @@
 // SPDX-License-Identifier: MIT
-// ddfcam gui: step-by-step playback of a planning::GrindingSimulation with live surface, tool,
-// collisions and removed volume per pass.
+// ddfcam gui: playback of a planning::LiveSimulation: live surface, tool, timeline, rates,
+// collisions, V-convexity events and removed volume per pass.
 #pragma once
 
 #include <ddfcam/gui/workbench.h>
+#include <ddfcam/gui/adapters/live_surface.h>
 #include <ddfcam/planning/simulation/grinding_simulation.h>
+#include <ddfcam/planning/simulation/live_simulation.h>
+#include <ddfcam/planning/tools/tool.h>
 
 #include <QElapsedTimer>
 #include <QString>
 #include <QWidget>
 
+#include <cstdint>
+#include <deque>
 #include <memory>
 
 class QComboBox;
@@ -17,33 +22,41 @@ class QLabel;
 class QListWidget;
 class QProgressBar;
 class QPushButton;
+class QSlider;
 class QTimer;
 
 namespace ddfcam::gui {
 
 /// @brief Parameters of SimulationPlayback.
 struct PlaybackParams {
-  int tickMs = 30;  ///< timer interval between playback frames, ms (default 30)
-  /// Cutting time allowed per frame, s: the batch of poses per frame is chosen from the
-  /// measured time per pose so the UI stays responsive. Default 0.02.
-  double cutBudgetS = 0.02;
-  /// The surface is re-uploaded to the view at most once per this many times its measured
-  /// rebuild time, so a large part (slow to triangulate) does not stall playback. Default 2.
-  double redrawCostFactor = 2.0;
+  /// Interval at which the view looks for a newer frame of the simulation, ms (default 15):
+  /// shorter than frameIntervalMs, so no published frame waits long.
+  int tickMs = 15;
+  /// Shortest time between two frames the simulation publishes while playing, ms: the display
+  /// rate (default 25, 40 frames per second) whatever the simulation's rate.
+  int frameIntervalMs = 25;
+  /// Error bound of the live surface (ch. 7 adaptive triangulation) as a fraction of the
+  /// part's bounding-box diagonal (dimensionless). Default 2e-4 (0.02 mm on a 100 mm part), as
+  /// DisplayParams::adaptiveEpsFraction.
+  double displayEpsFraction = 2e-4;
 };
 
 /// @brief Controls and state of a playback in the Simulation panel. begin() copies the part
-/// into a planning::GrindingSimulation of one path (the document is untouched); play() cuts a
-/// batch of poses per timer tick (speed in poses per second, or as fast as the per-frame budget
-/// allows), pause() stops, step() cuts exactly one pose. Every frame re-uploads the simulated
-/// surface to the part view, draws the tool at the last cut pose (cutting and non-cutting
-/// parts, the latter red on a collision), marks colliding poses, lists them and the removed
-/// volume per pass. At the end, or on apply(), the simulated heights are committed as one
+/// into a planning::LiveSimulation of one path (the document is untouched), which cuts on its
+/// own thread at the set poses per second and keeps an incremental triangulation of the cut
+/// surface; a timer takes its newest frame every tickMs and shows it (surface buffers swapped
+/// in place, the tool at the last cut pose with its non-cutting part red on a collision,
+/// colliding poses marked and listed, V-convexity poses listed, removed volume per pass, the
+/// simulated and the displayed rate, elapsed and remaining time). pause() stops the worker
+/// after its current pose, step() cuts exactly one pose, the timeline slider and a click on a
+/// listed event seek to a pose (the recorded cut is undone or redone, so the state is that of
+/// cutting poses 0..k). At the end, or on apply(), the simulated heights are committed as one
 /// undoable SetHeightsCommand that also records a simulation state; cancel() drops the copy
 /// and shows the document's surface again. A document edit during playback cancels it.
 /// Child object names: "playButton", "pauseButton", "stepButton", "applyPlaybackButton",
-/// "cancelPlaybackButton", "speedCombo", "playbackProgress", "playbackStatus",
-/// "collisionLabel", "collisionList", "removalList".
+/// "cancelPlaybackButton", "speedCombo", "timelineSlider", "playbackProgress",
+/// "playbackStatus", "playbackRates", "collisionLabel", "collisionList", "vConvexityList",
+/// "removalList".
 class SimulationPlayback : public QWidget {
   Q_OBJECT
 
@@ -59,57 +72,68 @@ class SimulationPlayback : public QWidget {
   bool begin(int index);
   /// @brief Plays (begins a playback of the set path if none is active). @return true if playing.
   bool play();
-  /// @brief Stops the timer; the playback stays active.
+  /// @brief Stops the simulation after its current pose; the playback stays active.
   void pause();
   /// @brief Cuts exactly one pose (begins a playback if none is active; pauses a running one).
   /// @return true if a pose was cut.
   bool step();
+  /// @brief Pauses and moves to the state after poses 0..@p posesCut - 1 (clamped to the path).
+  /// @return false without a playback.
+  bool seek(int posesCut);
   /// @brief Commits the heights cut so far (one undoable edit with a simulation state) and
   /// ends the playback. @return true if committed.
   bool apply();
   /// @brief Ends the playback without touching the document.
   void cancel();
-  /// @brief Poses per second while playing; <= 0: as fast as the frame budget allows.
+  /// @brief Poses per second while playing; <= 0: as fast as the machine can.
   void setPosesPerSecond(double posesPerSecond);
   /// @brief Mode and checks of the next begin() (a running playback keeps its own).
   void setSimulationParams(const planning::GrindingSimulationParams& params) {
     simulationParams_ = params;
   }
 
-  bool isActive() const { return simulation_ != nullptr; }
+  bool isActive() const { return live_ != nullptr; }
   bool isPlaying() const;
-  /// @brief The running simulation, or null.
-  const planning::GrindingSimulation* simulation() const { return simulation_.get(); }
+  /// @brief The paused simulation, or null (no playback, or playing).
+  const planning::GrindingSimulation* simulation() const;
+  /// @brief Poses cut in the frame shown, -1 without a playback.
+  int posesCut() const;
   /// @brief Index of the pose the tool is drawn at (last cut pose; 0 before the first cut),
   /// -1 without a playback.
   int shownPose() const;
+  /// @brief Frames shown in the last second of playing (0 before one passed).
+  double framesPerSecond() const;
 
  signals:
   /// @brief The playback ended: committed (true) or cancelled (false).
   void ended(bool committed);
 
  private:
+  void buildControls();
   void tick();
-  int batchSize(double seconds);
-  void cut(int poses);
-  void updateView(bool forceSurface);
+  void showLatest();
+  void showFrame(const planning::LiveFrame& frame);
+  void showReport(const planning::GrindingReport& report);
+  void showStatus(const planning::LiveFrame& frame);
   void updateControls();
   void restoreDocumentSurface();
+  bool checkWorker();
   void finishIfDone();
 
   Workbench& workbench_;
   PlaybackParams params_;
   planning::GrindingSimulationParams simulationParams_;
-  std::unique_ptr<planning::GrindingSimulation> simulation_;
+  std::unique_ptr<planning::LiveSimulation> live_;
+  std::unique_ptr<LiveSurfacePolyData> surface_;
   planning::Tool tool_;
+  planning::ToolPath path_;  ///< the path being played (a copy: the selection may change)
   int pathIndex_ = -1;
-  int simulatedPath_ = -1;
   double posesPerSecond_ = 30.0;
-  double credit_ = 0.0;        ///< poses owed to the speed since the last tick
-  double secondsPerPose_ = 0;  ///< measured cut time per pose (0: unknown)
-  double redrawSeconds_ = 0;   ///< measured surface rebuild time
+  std::uint64_t shownSerial_ = 0;
+  int shownPosesCut_ = -1;
+  std::deque<std::int64_t> frameTimesMs_;  ///< when frames were shown, last second
+  QElapsedTimer clock_;
   bool committing_ = false;
-  QElapsedTimer sinceTick_, sinceRedraw_;
   QTimer* timer_ = nullptr;
   QPushButton* play_ = nullptr;
   QPushButton* pause_ = nullptr;
@@ -117,10 +141,13 @@ class SimulationPlayback : public QWidget {
   QPushButton* apply_ = nullptr;
   QPushButton* cancel_ = nullptr;
   QComboBox* speed_ = nullptr;
+  QSlider* timeline_ = nullptr;
   QProgressBar* progress_ = nullptr;
   QLabel* status_ = nullptr;
+  QLabel* rates_ = nullptr;
   QLabel* collisionLabel_ = nullptr;
   QListWidget* collisions_ = nullptr;
+  QListWidget* vConvexity_ = nullptr;
   QListWidget* removal_ = nullptr;
 };
 

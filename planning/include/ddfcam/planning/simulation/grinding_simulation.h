@@ -11,6 +11,7 @@
 #include <ddfcam/progress.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace ddfcam::planning {
@@ -37,13 +38,19 @@ struct GrindingSimulationParams {
   /// Heights differing by less than this (units of h) are not a violation or a collision, so
   /// that a tool merely touching the surface reports nothing. Default 1e-4.
   double heightTolerance = 1e-4;
+  /// Keep the undo log of every pose so that GrindingSimulation::seek() can go backwards
+  /// (memory: see GrindingSimulation). simulateGrinding() never seeks and turns it off.
+  /// Default true.
+  bool recordUndo = true;
 };
 
 /// @brief Material removed by one pass.
 struct PassRemoval {
-  int firstPose = 0;              ///< index of the pass's first pose in the path
-  int poseCount = 0;              ///< poses of the pass cut so far
-  double removedVolumeMm3 = 0.0;  ///< volume removed by those poses, mm^3 (volumeBetween)
+  int firstPose = 0;  ///< index of the pass's first pose in the path
+  int poseCount = 0;  ///< poses of the pass cut so far
+  /// Volume removed by those poses, mm^3: volumeBetween over the pass, summed pose by pose
+  /// over the changed heights.
+  double removedVolumeMm3 = 0.0;
 };
 
 /// @brief A pose whose cut is not V-convex: stubbles where the cutting part's lowest interval
@@ -74,7 +81,7 @@ struct GrindingReport {
   std::vector<VConvexityViolation> vConvexity;  ///< poses with violations, ascending
   std::size_t vConvexityStubbles = 0;           ///< sum of their stubble counts
   std::vector<CollisionHit> collisions;         ///< colliding poses, ascending
-  double seconds = 0.0;                         ///< wall time spent in advance()
+  double seconds = 0.0;                         ///< wall time spent in advance() and seek(), s
 };
 
 /// @brief Playback of a tool path on a workpiece DDF: advance() cuts the next poses in
@@ -86,6 +93,13 @@ struct GrindingReport {
 /// the convex hull of the cutting part at k-1 and k (the part at k alone at a pass start).
 /// The non-cutting part never cuts. Heights only decrease and vectors never change, so one
 /// CrustHash built at construction serves the whole path.
+///
+/// Every pose records the stored heights it changed (shared copies included) with their
+/// previous values, which gives the pass volumes incrementally and lets seek() go back.
+/// Memory: a fixed copy of the heights (4 bytes per stored height) plus, per recorded pose,
+/// 8 bytes per stored height the pose changed and 32 bytes of counters, plus the slack of
+/// vector growth (undoMemoryBytes()). Example: the demo project's 267-pose path on a part of
+/// 235,008 stored heights changes 2,688 heights per pose, 21.5 kB per pose, 5.7 MB in all.
 class GrindingSimulation {
  public:
   /// @param workpiece the stock (see workpiece.h); copied in and cut in place.
@@ -103,6 +117,22 @@ class GrindingSimulation {
   /// far stay cut and the report counts them.
   int advance(int poses, const ProgressCallback& progress = {});
 
+  /// @brief Moves to the state after poses 0..@p pose - 1: backwards by restoring the recorded
+  /// heights (bit-identical to cutting only those poses), forwards by advance(). The report
+  /// (except seconds) then equals the report of a simulation of the path's first @p pose poses.
+  /// @throws InvalidInput for @p pose outside [0, path size], or a backward seek with
+  /// GrindingSimulationParams::recordUndo off.
+  void seek(int pose);
+
+  /// @brief Sorted distinct support faces whose heights advance() or seek() may have changed
+  /// since the last call (or construction); clears the set. Contains the faces the tool
+  /// touched (ddf::CutStats::touchedFaces) and every face with a changed stored height,
+  /// including copies of shared points changed by synchronization.
+  std::vector<int> takeChangedFaces();
+
+  /// @brief Bytes held for seeking: the height copy, the undo log and the per-pose counters.
+  std::size_t undoMemoryBytes() const;
+
   /// @brief Index of the next pose to cut (== path size when finished).
   int nextPose() const { return next_; }
   bool finished() const { return next_ >= static_cast<int>(path_.poses.size()); }
@@ -111,9 +141,26 @@ class GrindingSimulation {
   const ToolPath& path() const { return path_; }
 
  private:
-  void cutPose(int k);
+  /// One changed stored height: flat index into workpiece().allHeights() and its old value.
+  struct HeightChange {
+    std::uint32_t index = 0;
+    float before = 0.0f;
+  };
+  /// The state after one pose, for truncating the report on a backward seek.
+  struct PoseRecord {
+    std::size_t logEnd = 0;         // end of the pose's entries in log_
+    double passVolumeMm3 = 0.0;     // its pass's removed volume after the pose
+    std::size_t pointsLowered = 0;  // report counters after the pose
+    std::size_t pointsClamped = 0;
+  };
+
+  ddf::CutStats cutPose(int k);
   void checkPose(int k);
-  void closePassVolume();
+  void recordPose(const ddf::CutStats& stats);
+  double recordChanges(const std::vector<int>& touchedFaces);
+  void markChanged(int face);
+  void seekBack(int pose);
+  void sumPassVolumes();
   bool isPassStart(int k) const;
 
   ddf::DisplacementField workpiece_;
@@ -121,7 +168,11 @@ class GrindingSimulation {
   ToolPath path_;
   GrindingSimulationParams params_;
   ddf::CrustHash hash_;
-  std::vector<float> passStartHeights_;
+  std::vector<float> shadow_;        // heights after the last pose (before the next cut)
+  std::vector<HeightChange> log_;    // undo entries of all recorded poses, in pose order
+  std::vector<PoseRecord> records_;  // one per cut pose while recordUndo
+  std::vector<char> changedFlag_;    // per face: in changed_
+  std::vector<int> changed_;         // faces for takeChangedFaces()
   int next_ = 0;
   GrindingReport report_;
 };

@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: MIT
+// ddfcam gui: SimulationPlayback: showing a frame of the live simulation (surface, tool,
+// events, volumes, timeline, progress with the simulated and the displayed rate).
+#include <ddfcam/gui/panels/simulation_playback.h>
+
+#include <ddfcam/gui/part_view.h>
+#include <ddfcam/gui/tool_overlay.h>
+#include <ddfcam/gui/vtk_view.h>
+
+#include <QComboBox>
+#include <QLabel>
+#include <QListWidget>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSlider>
+
+#include <algorithm>
+
+namespace ddfcam::gui {
+
+namespace {
+
+bool isColliding(const planning::GrindingReport& report, int pose) {
+  return std::ranges::binary_search(report.collisions, pose, {}, &planning::CollisionHit::pose);
+}
+
+QString clockText(double seconds) {
+  const int s = static_cast<int>(std::lround(std::max(0.0, seconds)));
+  return QString("%1:%2").arg(s / 60).arg(s % 60, 2, 10, QChar('0'));
+}
+
+// Refills @p list with one item per event (pose, stubble count) unless it already has them.
+template <class Events>
+void listEvents(QListWidget* list, const Events& events) {
+  if (list->count() == static_cast<int>(events.size())) return;
+  list->clear();
+  for (const auto& e : events) {
+    auto* item = new QListWidgetItem(
+        QObject::tr("pose %1: %2 points").arg(e.pose).arg(static_cast<qulonglong>(e.stubbles)),
+        list);
+    item->setData(Qt::UserRole, e.pose);
+  }
+}
+
+}  // namespace
+
+double SimulationPlayback::framesPerSecond() const {
+  if (frameTimesMs_.size() < 2) return 0.0;
+  const double span = (frameTimesMs_.back() - frameTimesMs_.front()) / 1000.0;
+  return span > 0.0 ? (frameTimesMs_.size() - 1) / span : 0.0;
+}
+
+void SimulationPlayback::showLatest() {
+  if (!live_) return;
+  const std::shared_ptr<const planning::LiveFrame> frame = live_->latestFrame();
+  if (frame->serial == shownSerial_) return;
+  shownSerial_ = frame->serial;
+  showFrame(*frame);
+}
+
+void SimulationPlayback::showFrame(const planning::LiveFrame& frame) {
+  surface_->apply(frame);
+  shownPosesCut_ = frame.posesCut;
+  const planning::ToolPath& path = path_;
+  PartScene& scene = workbench_.partView.scene();
+  const int pose = std::max(0, frame.posesCut - 1);
+  if (pose < static_cast<int>(path.poses.size()))
+    showToolOverlay(scene, tool_, path.poses[static_cast<std::size_t>(pose)].pose,
+                    isColliding(frame.report, pose));
+  std::vector<Eigen::Vector3d> marks;
+  for (const planning::CollisionHit& hit : frame.report.collisions)
+    marks.push_back(path.poses[static_cast<std::size_t>(hit.pose)].contact);
+  showCollisionMarkers(scene, marks);
+  showReport(frame.report);
+  {
+    const QSignalBlocker block(timeline_);
+    timeline_->setValue(frame.posesCut);
+  }
+  if (live_->isPlaying()) {  // the display rate counts the frames shown while playing
+    frameTimesMs_.push_back(clock_.elapsed());
+    while (frameTimesMs_.size() > 2 && frameTimesMs_.back() - frameTimesMs_.front() > 1000)
+      frameTimesMs_.pop_front();
+  }
+  showStatus(frame);
+  workbench_.partView.view().requestRender();
+  updateControls();
+}
+
+void SimulationPlayback::showReport(const planning::GrindingReport& report) {
+  listEvents(collisions_, report.collisions);
+  listEvents(vConvexity_, report.vConvexity);
+  removal_->clear();
+  for (std::size_t i = 0; i < report.passes.size(); ++i)
+    removal_->addItem(tr("pass %1: %2 mm³ (%3 poses)")
+                          .arg(i + 1)
+                          .arg(report.passes[i].removedVolumeMm3, 0, 'f', 4)
+                          .arg(report.passes[i].poseCount));
+  collisionLabel_->setText(tr("Collisions: %1 poses; V-convexity violations: %2 poses")
+                               .arg(report.collisions.size())
+                               .arg(report.vConvexity.size()));
+}
+
+void SimulationPlayback::showStatus(const planning::LiveFrame& frame) {
+  QString text = tr("Pose %1 of %2, removed %3 mm³")
+                     .arg(frame.posesCut)
+                     .arg(frame.totalPoses)
+                     .arg(frame.report.removedVolumeMm3, 0, 'f', 4);
+  const double rate = frame.simulatedPosesPerSecond > 0.0 ? frame.simulatedPosesPerSecond
+                                                          : std::max(posesPerSecond_, 0.0);
+  if (frame.elapsedSeconds > 0.0) {
+    text += tr("; %1 elapsed").arg(clockText(frame.elapsedSeconds));
+    if (rate > 0.0 && frame.posesCut < frame.totalPoses)
+      text += tr(", about %1 left").arg(clockText((frame.totalPoses - frame.posesCut) / rate));
+  }
+  status_->setText(text);
+  if (!live_->isPlaying()) {
+    rates_->setText(tr("Paused; display update %1 ms").arg(1e3 * frame.displayUpdateSeconds, 0,
+                                                          'f', 1));
+    return;
+  }
+  const QString requested = posesPerSecond_ > 0.0 ? tr("%1 poses/s").arg(posesPerSecond_)
+                                                  : tr("as fast as possible");
+  rates_->setText(tr("Simulating %1 poses/s (set: %2), showing %3 frames/s; display update "
+                     "%4 ms")
+                      .arg(frame.simulatedPosesPerSecond, 0, 'f', 1)
+                      .arg(requested)
+                      .arg(framesPerSecond(), 0, 'f', 1)
+                      .arg(1e3 * frame.displayUpdateSeconds, 0, 'f', 1));
+}
+
+void SimulationPlayback::updateControls() {
+  const bool active = isActive();
+  const bool playing = isPlaying();
+  const bool finished = active && live_->finished();
+  const int total = active ? live_->latestFrame()->totalPoses : 0;
+  const int done = active ? live_->latestFrame()->posesCut : 0;
+  play_->setEnabled(!playing && !finished);
+  pause_->setEnabled(playing);
+  step_->setEnabled(!finished);
+  apply_->setEnabled(active && done > 0);
+  cancel_->setEnabled(active);
+  timeline_->setEnabled(active);
+  progress_->setValue(total > 0 ? static_cast<int>(1000.0 * done / total) : 0);
+  if (!active) {
+    status_->setText(tr("No playback"));
+    rates_->clear();
+    collisionLabel_->clear();
+    collisions_->clear();
+    vConvexity_->clear();
+  }
+}
+
+}  // namespace ddfcam::gui

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+// ddfcam: a grinding simulation that runs on its own thread and publishes display frames of the
+// cut surface (incremental adaptive triangulation) for a viewer that draws at its own pace.
+#pragma once
+
+#include <ddfcam/planning/simulation/grinding_simulation.h>
+
+#include <cstdint>
+#include <exception>
+#include <memory>
+#include <vector>
+
+namespace ddfcam::planning {
+
+/// @brief One published state of a LiveSimulation: the cut surface as an indexed mesh and the
+/// simulation's report at that pose. Frames are immutable once published.
+struct LiveFrame {
+  std::uint64_t serial = 0;  ///< increases with every published frame
+  int posesCut = 0;          ///< poses 0..posesCut-1 are cut (GrindingSimulation::nextPose)
+  int totalPoses = 0;        ///< poses of the path
+  GrindingReport report;     ///< the report at that state
+  /// Vertex slots, 3 floats each (x, y, z), mm, part frame; unused slots are stale.
+  std::vector<float> positions;
+  /// Unit area-weighted normals per slot, 3 floats each (zero for an unused slot).
+  std::vector<float> normals;
+  std::vector<std::int32_t> triangles;     ///< 3 slots per triangle, grouped by support face
+  std::vector<std::int32_t> triangleFace;  ///< support face of each triangle
+  /// Poses per second the simulation achieved over the last second (0 before one passed).
+  double simulatedPosesPerSecond = 0.0;
+  double displayUpdateSeconds = 0.0;  ///< worker time of the last display update, s
+  double elapsedSeconds = 0.0;        ///< playing time so far (pauses excluded), s
+};
+
+/// @brief Parameters of LiveSimulation.
+struct LiveSimulationParams {
+  GrindingSimulationParams simulation;  ///< what is cut and checked (recordUndo is forced on)
+  /// Error bound of the displayed triangulation (ch. 7), mm (> 0). Default 0.01.
+  double displayEpsMm = 0.01;
+  /// Poses per second while playing; <= 0: as fast as the machine can. Default 30.
+  double posesPerSecond = 30.0;
+  /// Shortest time between two published frames while playing, s: the display follows at
+  /// this rate however fast the simulation runs. Default 1/30.
+  double frameIntervalS = 1.0 / 30.0;
+};
+
+/// @brief Plays a GrindingSimulation on a worker thread. play() starts cutting at the set rate;
+/// the worker updates an incremental triangulation of the surface (only the faces a cut
+/// reached) and publishes a LiveFrame at most every frameIntervalS and whenever it stops;
+/// latestFrame() hands the newest one to the viewer's thread. pause() stops the worker after
+/// the pose it is cutting (one pose of latency); step() and seek() run on the caller's thread
+/// with the worker stopped. The state at pose k is the same whether reached by playing, by
+/// stepping or by seeking (GrindingSimulation::seek restores recorded heights).
+/// All member functions are called from one (the viewer's) thread.
+class LiveSimulation {
+ public:
+  /// @throws as GrindingSimulation, and InvalidInput for a non-positive displayEpsMm.
+  LiveSimulation(ddf::DisplacementField workpiece, const ToolMeshes& tool, const ToolPath& path,
+                 LiveSimulationParams params = {});
+  /// Stops the worker.
+  ~LiveSimulation();
+  LiveSimulation(const LiveSimulation&) = delete;
+  LiveSimulation& operator=(const LiveSimulation&) = delete;
+
+  /// @brief Starts (or continues) cutting on the worker; false when the path is finished.
+  bool play();
+  /// @brief Stops the worker after its current pose and publishes the state.
+  void pause();
+  /// @brief Pauses, cuts the next pose and publishes; false when the path is finished.
+  /// @throws ddfcam::Error from the cut.
+  bool step();
+  /// @brief Pauses and moves to the state after poses 0..@p pose - 1 (see
+  /// GrindingSimulation::seek), then publishes. @throws InvalidInput for a pose out of range.
+  void seek(int pose);
+  /// @brief Poses per second for the next play (and the running one); <= 0: as fast as possible.
+  void setPosesPerSecond(double posesPerSecond);
+
+  bool isPlaying() const;
+  bool finished() const;
+  /// @brief The newest published frame (never null after construction). Thread-safe.
+  std::shared_ptr<const LiveFrame> latestFrame() const;
+  /// @brief The error that stopped the worker, once (then cleared), or null.
+  std::exception_ptr takeError();
+  /// @brief The simulation; only while not playing (pause() first).
+  /// @throws InvalidInput while playing.
+  const GrindingSimulation& simulation() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace ddfcam::planning

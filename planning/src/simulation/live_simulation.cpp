@@ -1,0 +1,236 @@
+// SPDX-License-Identifier: MIT
+// ddfcam: LiveSimulation: the worker that cuts at a set rate and publishes display frames.
+#include <ddfcam/ddf/incremental_triangulation.h>
+#include <ddfcam/error.h>
+#include <ddfcam/planning/simulation/live_simulation.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <deque>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace ddfcam::planning {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsBetween(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+GrindingSimulationParams withUndo(GrindingSimulationParams params) {
+  params.recordUndo = true;  // seek() goes back
+  return params;
+}
+
+// Longest single sleep of the worker, so that pause() never waits for a slow rate.
+constexpr auto kMaxSleep = std::chrono::milliseconds(5);
+// Poses a slow machine may owe the set rate: more are dropped rather than cut in a burst.
+constexpr double kMaxCredit = 2.0;
+
+}  // namespace
+
+struct LiveSimulation::State {
+  GrindingSimulation simulation;
+  LiveSimulationParams params;
+  std::unique_ptr<ddf::IncrementalTriangulation> display;
+  std::thread worker;
+  std::atomic<bool> stop{false}, playing{false};
+  std::atomic<double> posesPerSecond{30.0};
+  mutable std::mutex frameMutex;
+  std::shared_ptr<const LiveFrame> frame;
+  std::mutex errorMutex;
+  std::exception_ptr error;
+  std::uint64_t serial = 0;
+  double elapsedSeconds = 0.0;  // playing time of finished plays
+  Clock::time_point playStart;
+  std::deque<Clock::time_point> recentPoses;  // poses cut in the last second
+  double lastUpdateSeconds = 0.0;
+
+  State(ddf::DisplacementField workpiece, const ToolMeshes& tool, const ToolPath& path,
+        const LiveSimulationParams& p)
+      : simulation(std::move(workpiece), tool, path, withUndo(p.simulation)), params(p) {
+    posesPerSecond = p.posesPerSecond;
+    display = std::make_unique<ddf::IncrementalTriangulation>(simulation.workpiece(),
+                                                              p.displayEpsMm);
+  }
+
+  double playingSeconds() const {
+    return elapsedSeconds + (playing ? secondsBetween(playStart, Clock::now()) : 0.0);
+  }
+
+  void notePose(Clock::time_point at) {
+    recentPoses.push_back(at);
+    while (!recentPoses.empty() && secondsBetween(recentPoses.front(), at) > 1.0)
+      recentPoses.pop_front();
+  }
+
+  double poseRate() const {
+    if (recentPoses.size() < 2) return 0.0;
+    const double span = secondsBetween(recentPoses.front(), recentPoses.back());
+    return span > 0.0 ? (recentPoses.size() - 1) / span : 0.0;
+  }
+
+  void publish();
+  void run();
+  void join() {
+    stop = true;
+    if (worker.joinable()) worker.join();
+    stop = false;
+  }
+};
+
+void LiveSimulation::State::publish() {
+  const auto start = Clock::now();
+  const std::vector<int> changed = simulation.takeChangedFaces();
+  if (!changed.empty()) display->update(changed);
+  lastUpdateSeconds = secondsBetween(start, Clock::now());
+  auto out = std::make_shared<LiveFrame>();
+  out->serial = ++serial;
+  out->posesCut = simulation.nextPose();
+  out->totalPoses = static_cast<int>(simulation.path().poses.size());
+  out->report = simulation.report();
+  const auto& vertices = display->vertices();
+  const auto& normals = display->normals();
+  out->positions.resize(3 * vertices.size());
+  out->normals.resize(3 * vertices.size());
+  for (std::size_t v = 0; v < vertices.size(); ++v)
+    for (int c = 0; c < 3; ++c) {
+      out->positions[3 * v + c] = static_cast<float>(vertices[v][c]);
+      out->normals[3 * v + c] = static_cast<float>(normals[v][c]);
+    }
+  const int faces = simulation.workpiece().faceCount();
+  out->triangles.reserve(3 * display->triangleCount());
+  out->triangleFace.reserve(display->triangleCount());
+  for (int f = 0; f < faces; ++f)
+    for (const auto& t : display->faceTriangles(f)) {
+      out->triangles.insert(out->triangles.end(), t.begin(), t.end());
+      out->triangleFace.push_back(f);
+    }
+  out->simulatedPosesPerSecond = poseRate();
+  out->displayUpdateSeconds = lastUpdateSeconds;
+  out->elapsedSeconds = playingSeconds();
+  const std::lock_guard lock(frameMutex);
+  frame = std::move(out);
+}
+
+void LiveSimulation::State::run() {
+  try {
+    Clock::time_point lastFrame = Clock::now();
+    Clock::time_point last = lastFrame;
+    double credit = 1.0;  // the first pose at once
+    while (!stop && !simulation.finished()) {
+      const double rate = posesPerSecond.load();
+      const Clock::time_point now = Clock::now();
+      if (rate > 0.0) {
+        credit = std::min(credit + rate * secondsBetween(last, now), kMaxCredit);
+        last = now;
+        if (credit < 1.0) {
+          const auto due = std::chrono::duration<double>((1.0 - credit) / rate);
+          std::this_thread::sleep_for(
+              std::min(std::chrono::duration_cast<Clock::duration>(due),
+                       std::chrono::duration_cast<Clock::duration>(kMaxSleep)));
+          continue;
+        }
+        credit -= 1.0;
+      }
+      simulation.advance(1);
+      notePose(Clock::now());
+      if (secondsBetween(lastFrame, Clock::now()) >= params.frameIntervalS) {
+        publish();
+        lastFrame = Clock::now();
+      }
+    }
+  } catch (...) {
+    const std::lock_guard lock(errorMutex);
+    error = std::current_exception();
+  }
+  // The time is booked before the last frame, and playing cleared after it, so that a viewer
+  // that sees the worker stopped also sees its final frame.
+  elapsedSeconds += secondsBetween(playStart, Clock::now());
+  playStart = Clock::now();
+  try {
+    publish();
+  } catch (...) {
+    const std::lock_guard lock(errorMutex);
+    if (!error) error = std::current_exception();
+  }
+  playing = false;
+}
+
+LiveSimulation::LiveSimulation(ddf::DisplacementField workpiece, const ToolMeshes& tool,
+                               const ToolPath& path, LiveSimulationParams params) {
+  if (!(params.displayEpsMm > 0.0))
+    throw InvalidInput("LiveSimulation: the display error bound must be > 0 mm, got " +
+                       std::to_string(params.displayEpsMm));
+  state_ = std::make_unique<State>(std::move(workpiece), tool, path, params);
+  state_->publish();
+}
+
+LiveSimulation::~LiveSimulation() {
+  state_->join();
+}
+
+bool LiveSimulation::play() {
+  State& s = *state_;
+  if (s.playing) return true;
+  s.join();  // a worker that ran to the end
+  if (s.simulation.finished()) return false;
+  s.recentPoses.clear();
+  s.playStart = Clock::now();
+  s.playing = true;
+  s.worker = std::thread([&s] { s.run(); });
+  return true;
+}
+
+void LiveSimulation::pause() {
+  state_->join();
+}
+
+bool LiveSimulation::step() {
+  pause();
+  State& s = *state_;
+  if (s.simulation.finished()) return false;
+  s.simulation.advance(1);
+  s.publish();
+  return true;
+}
+
+void LiveSimulation::seek(int pose) {
+  pause();
+  state_->simulation.seek(pose);
+  state_->publish();
+}
+
+void LiveSimulation::setPosesPerSecond(double posesPerSecond) {
+  state_->posesPerSecond = posesPerSecond;
+}
+
+bool LiveSimulation::isPlaying() const {
+  return state_->playing;
+}
+
+bool LiveSimulation::finished() const {
+  return !state_->playing && state_->simulation.finished();
+}
+
+std::shared_ptr<const LiveFrame> LiveSimulation::latestFrame() const {
+  const std::lock_guard lock(state_->frameMutex);
+  return state_->frame;
+}
+
+std::exception_ptr LiveSimulation::takeError() {
+  const std::lock_guard lock(state_->errorMutex);
+  return std::exchange(state_->error, nullptr);
+}
+
+const GrindingSimulation& LiveSimulation::simulation() const {
+  if (state_->playing)
+    throw InvalidInput("LiveSimulation::simulation: pause the playback before reading its state");
+  return state_->simulation;
+}
+
+}  // namespace ddfcam::planning
