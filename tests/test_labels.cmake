@@ -66,6 +66,7 @@ set(DDFCAM_SLOW_TESTS
   CliRun.RelativePathsResolveAgainstTheJobFile
   CliRun.SmallJobWritesOutputsThatReadBack
   CliRun.TwoRunsGiveIdenticalFiles
+  CliSimulate.APathOfManyPosesIsAnnouncedWithItsEstimate
   CliSimulate.BadArgumentsGiveClearErrorsAndExitCodes
   CliSimulate.LeadTurnsAFlatEndIntoAnEllipticGroove
   CliSimulate.PlanThenSimulateOnTheDemoPart

@@ -16,6 +16,7 @@
 #include <ddfcam/planning/placement/penetration_correction.h>
 #include <ddfcam/planning/simulation/grinding_simulation.h>
 #include <ddfcam/planning/simulation/preston_removal.h>
+#include <ddfcam/planning/simulation/simulation_estimate.h>
 #include <ddfcam/planning/simulation/workpiece.h>
 
 #include "arguments.h"
@@ -268,6 +269,20 @@ void correct(const SimulateOptions& o, const ddf::DisplacementField& goal, CsvPa
   r.correctSeconds = secondsSince(start);
 }
 
+// Paths with more poses than this are announced with their estimated time before they run.
+constexpr std::size_t kLongPathPoses = 5'000;
+
+void announceLongPath(const ddf::DisplacementField& part, const SimulateOptions& o,
+                      const planning::ToolPath& path,
+                      const planning::GrindingSimulationParams& simulation) {
+  if (path.poses.size() <= kLongPathPoses) return;
+  const planning::SimulationEstimate e =
+      planning::estimateSimulation(part, planning::toolMeshes(o.tool), path, simulation);
+  std::cerr << "simulating " << path.poses.size() << " poses: about "
+            << static_cast<long long>(std::ceil(e.seconds)) << " s (" << 1e3 * e.secondsPerPose
+            << " ms per pose, timed on " << e.sampled << " of them)\n";
+}
+
 void cut(const SimulateOptions& o, const CsvPath& path, ddf::DisplacementField& part,
          SimulationResult& r) {
   const Clock::time_point start = Clock::now();
@@ -290,6 +305,7 @@ void cut(const SimulateOptions& o, const CsvPath& path, ddf::DisplacementField& 
     planning::GrindingSimulationParams simulation;
     simulation.checkVConvexity = o.checkVConvexity;
     simulation.mode = o.swept ? planning::SweepMode::Swept : planning::SweepMode::Discrete;
+    announceLongPath(part, o, path.path, simulation);
     r.grinding = planning::simulateGrinding(part, planning::toolMeshes(o.tool), path.path,
                                             simulation, consoleProgress("grinding"));
     r.removedVolumeMm3 = r.grinding.removedVolumeMm3;

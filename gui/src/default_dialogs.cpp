@@ -130,6 +130,11 @@ WorkbenchDialogs withDefaultDialogs(WorkbenchDialogs d, QWidget* parent) {
   if (!d.error) d.error = messageBoxReporter(parent);
   addPathDialogs(d, guarded);
   addPartDialogs(d, guarded);
+  if (!d.confirmLongJob)
+    d.confirmLongJob = [guarded](const QString& title, const QString& message) {
+      return QMessageBox::question(guarded, title, message, QMessageBox::Yes | QMessageBox::No,
+                                   QMessageBox::Yes) == QMessageBox::Yes;
+    };
   return d;
 }
 

@@ -131,6 +131,7 @@ void MainWindow::createDocks() {
   plots_->raise();
   workbench_ = std::make_unique<Workbench>(
       Workbench{*document_, *jobs_, *partView_, *plots_, *console_, dialogs_.error});
+  workbench_->confirmLongJob = dialogs_.confirmLongJob;
   // A converted mesh that is no valid DDF stays flagged in the status until the next open;
   // the details are in the console, which comes to the front.
   connect(projectActions_.get(), &ProjectActions::opened, this, [this] {

@@ -125,6 +125,30 @@ TEST(CliSimulate, PlanThenSimulateOnTheDemoPart) {
   EXPECT_GT(jsonNumber(json, "removed_volume_mm3"), 0.0);
 }
 
+TEST(CliSimulate, APathOfManyPosesIsAnnouncedWithItsEstimate) {
+  test::ScratchDir dir;
+  writeDdf(plate(), dir / "plate.ddf");
+  // 16 mm every 3 um: 5,334 poses, above the 5,000 that are announced.
+  writeToolPathCsv(straightPass(0.003), dir / "long.csv");
+  writeToolPathCsv(straightPass(), dir / "short.csv");
+  const auto run = [&](const char* csv) {
+    return cli(dir, "simulate",
+               {(dir / "plate.ddf").string(), "--paths", (dir / csv).string(), "--radius", "5",
+                "--width", "4.1", "--allowance", "0.1", "-o", (dir / "out.ddf").string()});
+  };
+  const CliRun longRun = run("long.csv");
+  ASSERT_EQ(longRun.exitCode, 0) << longRun.err;
+  const std::regex announced(R"(simulating 5334 poses: about (\d+) s \(([0-9.e-]+) ms per pose, timed on 16 of them\))");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(longRun.err, m, announced)) << longRun.err;
+  // The estimate is the pose count times the timed mean, rounded up (the mean is printed to
+  // six digits, so the product may land on the other side of a whole second).
+  EXPECT_NEAR(std::stod(m[1]), std::ceil(5334 * std::stod(m[2]) * 1e-3), 1.0);
+  const CliRun shortRun = run("short.csv");
+  ASSERT_EQ(shortRun.exitCode, 0) << shortRun.err;
+  EXPECT_THAT(shortRun.err, ::testing::Not(HasSubstr("poses: about")));
+}
+
 TEST(CliSimulate, BadArgumentsGiveClearErrorsAndExitCodes) {
   test::ScratchDir dir;
   writeDdf(plate(), dir / "plate.ddf");

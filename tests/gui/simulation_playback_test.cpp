@@ -10,6 +10,7 @@
 #include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/document_command.h>
+#include <ddfcam/gui/job_progress_widget.h>
 #include <ddfcam/gui/panels/simulation_panel.h>
 #include <ddfcam/gui/panels/simulation_playback.h>
 #include <ddfcam/gui/part_scene.h>
@@ -80,6 +81,7 @@ class SimulationPlaybackTest : public ddfcam::test::WorkbenchTest {
   void collisionsAreListedAndMarked();
   void timelineAndEventsSeekToTheStateOfThePose();
   void pauseAndStepActWithin100MsAndRatesAreShown();
+  void longPathsAreAnnouncedWithTheirEstimate();
 };
 
 void SimulationPlaybackTest::playToTheEndCutsTheGrooveAndUndoRestores() {
@@ -341,6 +343,31 @@ void SimulationPlaybackTest::pauseAndStepActWithin100MsAndRatesAreShown() {
   // Playing at 30 poses/s for 0.7 s cannot have cut more than about 30 x 0.7 + 3 poses.
   QVERIFY2(paused <= 25, qPrintable(QString::number(paused)));
   playback().cancel();
+}
+
+void SimulationPlaybackTest::longPathsAreAnnouncedWithTheirEstimate() {
+  loadDemo();
+  auto* panel = f_.window->findChild<ddfcam::gui::SimulationPanel*>();
+  const std::vector<float> stock = project().part->allHeights();
+  // The default threshold lets the 37-pose path start without a question.
+  QCOMPARE(panel->longPathPoses(), 5000);
+  panel->setLongPathPoses(10);
+  f_.script.longJobMessages.clear();
+  f_.script.confirmLongJobs = false;
+  QVERIFY(!panel->simulatePath(0));  // declined: nothing started, nothing changed
+  QCOMPARE(f_.script.longJobMessages.size(), 1);
+  const QString message = f_.script.longJobMessages.front();
+  QVERIFY2(message.contains("has 37 poses") && message.contains("will take about") &&
+               message.contains("ms per pose, timed on 16 of its poses"),
+           qPrintable(message));
+  QVERIFY(!f_.window->findChild<ddfcam::gui::JobProgressWidget*>()->isVisible());
+  QCOMPARE(project().part->allHeights(), stock);
+  f_.script.confirmLongJobs = true;
+  QVERIFY(panel->simulatePath(0));
+  waitOk();
+  QVERIFY(project().part->allHeights() != stock);
+  QCOMPARE(f_.script.longJobMessages.size(), 2);
+  panel->setLongPathPoses(5000);
 }
 
 DDFCAM_GUI_TEST_MAIN(SimulationPlaybackTest)

@@ -37,6 +37,8 @@ struct ScriptedDialogs {
   QList<gui::PartImportChoices> importInitialChoices;  ///< and what it started with
   QStringList stockOffers;                             ///< "message|largest" of every stock offer
   bool acceptLargestStock = false;                     ///< answer to the stock offer
+  QStringList longJobMessages;                         ///< every long-job announcement
+  bool confirmLongJobs = true;                         ///< answer to them
 
   static gui::PartImportChoices legacyImport() {
     gui::PartImportChoices c;
@@ -71,6 +73,10 @@ struct ScriptedDialogs {
       importRequests << request;
       importInitialChoices << initial;
       return acceptInitialImport ? std::optional(initial) : importChoices;
+    };
+    d.confirmLongJob = [this](const QString&, const QString& message) {
+      longJobMessages << message;
+      return confirmLongJobs;
     };
     d.offerLargestStock = [this](const QString& message, double largestMm) {
       stockOffers << message + "|" + QString::number(largestMm);

@@ -14,6 +14,7 @@
 #include <ddfcam/planning/model/simulation_states.h>
 #include <ddfcam/planning/pipeline/simulation_stage.h>
 #include <ddfcam/planning/simulation/grinding_simulation.h>
+#include <ddfcam/planning/simulation/simulation_estimate.h>
 #include <ddfcam/planning/simulation/workpiece.h>
 
 #include <QElapsedTimer>
@@ -109,6 +110,26 @@ QString prestonText(const planning::ToolPath& path, const planning::PrestonRepor
 
 }  // namespace
 
+bool SimulationPanel::confirmLongPath(const planning::ToolPath& path, const planning::Tool& tool) {
+  if (static_cast<int>(path.poses.size()) <= longPathPoses_ || !workbench().confirmLongJob)
+    return true;
+  const planning::Project& p = workbench().document.project();
+  const planning::SimulationEstimate e = planning::estimateSimulation(
+      *p.part, planning::toolMeshes(tool), path, options_->grindingParams());
+  const int seconds = static_cast<int>(std::ceil(e.seconds));
+  const QString time = seconds >= 120 ? tr("%1 min").arg((seconds + 59) / 60)
+                                      : tr("%1 s").arg(std::max(seconds, 1));
+  const QString message =
+      tr("Path '%1' has %2 poses. Simulating it will take about %3 on this machine (%4 ms per "
+         "pose, timed on %5 of its poses). Simulate now?")
+          .arg(QString::fromStdString(path.name))
+          .arg(path.poses.size())
+          .arg(time)
+          .arg(1e3 * e.secondsPerPose, 0, 'f', 1)
+          .arg(e.sampled);
+  return workbench().confirmLongJob(tr("Simulate path"), message);
+}
+
 bool SimulationPanel::startJob(const QString& title, JobWork work) {
   if (!workbench().jobs.start(title, std::move(work)))
     throw InvalidInput("another job is running; wait for it or cancel it first");
@@ -133,6 +154,7 @@ bool SimulationPanel::simulatePath(int index) {
     // The job grinds a copy: a cancelled or failed run leaves the document as it was.
     auto part = std::make_shared<ddf::DisplacementField>(*p.part);
     const planning::Tool tool = p.tools[static_cast<std::size_t>(path.tool)];
+    if (!confirmLongPath(path, tool)) return;
     const bool preston = options_->removalModel() == RemovalModel::Preston;
     const planning::GrindingSimulationParams grinding = options_->grindingParams();
     const planning::PrestonParams prestonParams = options_->prestonParams();

@@ -79,6 +79,9 @@ struct WorkbenchDialogs {
   /// Tells that the crust cannot hold the requested stock (@p message: where and why) and
   /// offers to import again with the largest allowance it holds, @p largestMm; true: re-import.
   std::function<bool(const QString& message, double largestMm)> offerLargestStock;
+  /// Announces a long job before it starts (@p title, e.g. "Simulate path", and @p message
+  /// with its size and estimated time); true: go on.
+  std::function<bool(const QString& title, const QString& message)> confirmLongJob;
 };
 
 /// @brief File operations on a Document. Loading runs as a job (a big mesh converts for a

@@ -5,6 +5,7 @@
 #include <ddfcam/gui/user_action.h>
 
 #include <QList>
+#include <functional>
 #include <QString>
 #include <QWidget>
 
@@ -33,6 +34,9 @@ struct Workbench {
   MouldView* mouldView = nullptr;  ///< the "Mould" tab's views (mould and formed surfaces)
   /// File operations; partReport() says how the document's part was imported (may be null).
   ProjectActions* projectActions = nullptr;
+  /// Announces a long job with its estimate (see WorkbenchDialogs::confirmLongJob); true: go
+  /// on. Null: always go on.
+  std::function<bool(const QString& title, const QString& message)> confirmLongJob;
 };
 
 /// @brief A workflow panel: a widget the main window puts in a dock, plus optional actions it

@@ -4,6 +4,8 @@
 
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/workbench.h>
+#include <ddfcam/planning/model/tool_path.h>
+#include <ddfcam/planning/tools/tool.h>
 
 class QDoubleSpinBox;
 class QLabel;
@@ -36,8 +38,13 @@ class SimulationPanel : public Panel {
   QString menuTitle() const override { return tr("&Simulate"); }
   QList<QAction*> menuActions() const override { return actions_; }
 
-  /// @brief Starts grinding path @p index (the Simulate button). @return true if started.
+  /// @brief Starts grinding path @p index (the Simulate button). A path of more than
+  /// longPathPoses() poses is first announced with its estimated time
+  /// (planning::estimateSimulation, Workbench::confirmLongJob). @return true if started.
   bool simulatePath(int index);
+  /// @brief Paths with more poses than this are announced before Simulate (default 5,000).
+  int longPathPoses() const { return longPathPoses_; }
+  void setLongPathPoses(int poses) { longPathPoses_ = poses; }
   /// @brief Sets the part's heights to those of state @p index (undoable).
   /// @return true if done.
   bool restoreState(int index);
@@ -73,8 +80,10 @@ class SimulationPanel : public Panel {
   QWidget* makeWorkpieceGroup();
   QWidget* makeCorrectionGroup();
   bool startJob(const QString& title, JobWork work);
+  bool confirmLongPath(const planning::ToolPath& path, const planning::Tool& tool);
   void report(const QString& text, QLabel* label);
 
+  int longPathPoses_ = 5'000;
   QList<QAction*> actions_;
   QListWidget* tools_ = nullptr;
   QListWidget* paths_ = nullptr;
