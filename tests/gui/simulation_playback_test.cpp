@@ -7,6 +7,9 @@
 #include "workbench_test.h"
 
 #include <ddfcam/ddf/adaptive_triangulation.h>
+#include <ddfcam/ddf/analytic_generators.h>
+#include <ddfcam/ddf/raster_normal.h>
+#include <ddfcam/planning/model/simulation_states.h>
 #include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/document_command.h>
@@ -23,6 +26,7 @@
 #include <QLabel>
 #include <QElapsedTimer>
 #include <QListWidget>
+#include <QPushButton>
 #include <QSlider>
 #include <QUndoStack>
 #include <QtTest/QtTest>
@@ -82,6 +86,7 @@ class SimulationPlaybackTest : public ddfcam::test::WorkbenchTest {
   void timelineAndEventsSeekToTheStateOfThePose();
   void pauseAndStepActWithin100MsAndRatesAreShown();
   void longPathsAreAnnouncedWithTheirEstimate();
+  void overcutAgainstTheDesignIsInspectedLive();
 };
 
 void SimulationPlaybackTest::playToTheEndCutsTheGrooveAndUndoRestores() {
@@ -368,6 +373,60 @@ void SimulationPlaybackTest::longPathsAreAnnouncedWithTheirEstimate() {
   QVERIFY(project().part->allHeights() != stock);
   QCOMPARE(f_.script.longJobMessages.size(), 2);
   panel->setLongPathPoses(5000);
+}
+
+void SimulationPlaybackTest::overcutAgainstTheDesignIsInspectedLive() {
+  auto* label = f_.window->findChild<QLabel*>("overcutLabel");
+  auto* show = f_.window->findChild<QPushButton*>("showOvercutButton");
+  // Without a design state nothing is inspected, and the panel says how to get one.
+  loadDemo();
+  QVERIFY(playback().step());
+  QVERIFY2(label->text().startsWith("Overcut: not inspected"), qPrintable(label->text()));
+  QVERIFY(!show->isEnabled());
+  playback().cancel();
+  // The design of the small demo: the same generator without the 0.2 mm allowance gives the
+  // same support and vectors with the design's heights.
+  ddfcam::ddf::DemoPartParams designParams;
+  designParams.cellsX = 16;
+  designParams.cellsY = 12;
+  designParams.m = 9;
+  designParams.allowanceMm = 0.0;
+  const ddfcam::ddf::DisplacementField design = ddfcam::ddf::demoPart(designParams).ddf;
+  auto demo = ddfcam::test::smallDemo();
+  QCOMPARE(design.allHeights().size(), demo.project.part->allHeights().size());
+  QVERIFY(design.vector(0) == demo.project.part->vector(0));
+  demo.project.states.push_back({ddfcam::planning::kDesignStateName, design.allHeights()});
+  demo_ = demo;
+  load(demo.project);
+  playback().setPathIndex(0);
+  for (int i = 0; i < 10; ++i) QVERIFY(playback().step());
+  // Oracle: the deepest point of the whole simulated part below the design, brute force
+  // ((h_design - h) (v . n) at every raster point, n the design's raster normal). The 10 mm
+  // roll on the bumpy demo surface digs in with its edges well beyond the 0.02 mm it is sunk
+  // at the contacts.
+  const auto& work = playback().simulation()->workpiece();
+  double deepest = 0.0;
+  const int n = design.raster().steps();
+  for (int f = 0; f < design.faceCount(); ++f)
+    for (int k = 0; k <= n; ++k)
+      for (int i = 0; i + k <= n; ++i) {
+        const double below = design.height(f, i, k) - work.height(f, i, k);
+        const auto v = design.vectorAt(f, design.rasterBary(i, k));
+        deepest = std::max(deepest, below * v.dot(ddfcam::ddf::rasterNormal(design, f, i, k)));
+      }
+  const QString text = label->text();
+  QVERIFY2(text.startsWith("Largest overcut so far: "), qPrintable(text));
+  const double depth = text.section(' ', 4, 4).toDouble();
+  QVERIFY2(std::abs(depth - deepest) < 1e-4, qPrintable(text + " " + QString::number(deepest)));
+  const int pose = text.section("at pose ", 1).section(';', 0, 0).toInt();
+  QVERIFY(pose >= 0 && pose < 10);
+  QVERIFY(show->isEnabled());
+  QTest::mouseClick(show, Qt::LeftButton);
+  QCOMPARE(playback().simulation()->nextPose(), pose + 1);
+  QVERIFY(toolOverlayAt(pose));
+  QTest::qWait(50);  // the wrapped labels are laid out again first
+  ddfcam::test::dumpFrame(playback().grab().toImage(), "playback_overcut");
+  playback().cancel();
 }
 
 DDFCAM_GUI_TEST_MAIN(SimulationPlaybackTest)

@@ -13,6 +13,7 @@
 
 #include <QComboBox>
 #include <QGridLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
 #include <QProgressBar>
@@ -71,6 +72,10 @@ SimulationPlayback::SimulationPlayback(Workbench& workbench, PlaybackParams para
   connect(timeline_, &QSlider::valueChanged, this, [this](int value) {
     if (isActive() && value != shownPosesCut_) seek(value);
   });
+  connect(showOvercut_, &QPushButton::clicked, this, [this] {
+    if (!isActive()) return;
+    if (const auto& worst = live_->latestFrame()->largestOvercut) seek(worst->pose + 1);
+  });
   // A listed event moves the timeline to the state just after its pose (tool drawn there).
   for (QListWidget* list : {collisions_, vConvexity_})
     connect(list, &QListWidget::itemClicked, this,
@@ -121,8 +126,21 @@ void SimulationPlayback::buildControls() {
     *label = new QLabel(this);
     (*label)->setObjectName(name);
     (*label)->setWordWrap(true);
+    // Never squeezed below their wrapped text by the lists (the panel is scrolled instead).
+    (*label)->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Minimum);
     layout->addWidget(*label);
   }
+  overcut_ = new QLabel(this);
+  overcut_->setObjectName("overcutLabel");
+  overcut_->setWordWrap(true);
+  overcut_->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Minimum);
+  layout->addWidget(overcut_);
+  auto* overcutRow = new QHBoxLayout;
+  showOvercut_ = makeButton(tr("Show the largest overcut"), "showOvercutButton", this);
+  showOvercut_->setToolTip(tr("Move the timeline to the pose of the largest overcut"));
+  overcutRow->addStretch(1);
+  overcutRow->addWidget(showOvercut_);
+  layout->addLayout(overcutRow);
   layout->addWidget(new QLabel(tr("Collisions (click: show the pose)"), this));
   collisions_ = makeList("collisionList", 70, this);
   layout->addWidget(collisions_);
@@ -178,6 +196,11 @@ bool SimulationPlayback::begin(int index) {
     live.displayEpsMm = params_.displayEpsFraction * supportDiagonalMm(*p.part);
     live.posesPerSecond = posesPerSecond_;
     live.frameIntervalS = params_.frameIntervalMs / 1000.0;
+    if (const planning::SimulationState* design = planning::designState(p.states))
+      if (design->heights.size() == p.part->allHeights().size()) {
+        live.designHeights = design->heights;
+        live.overcutToleranceMm = params_.overcutToleranceMm;
+      }
     live_ = std::make_unique<planning::LiveSimulation>(*p.part, planning::toolMeshes(tool_), path,
                                                        live);
     surface_ = std::make_unique<LiveSurfacePolyData>();

@@ -83,6 +83,7 @@ void SimulationPlayback::showFrame(const planning::LiveFrame& frame) {
       frameTimesMs_.pop_front();
   }
   showStatus(frame);
+  showOvercut(frame);
   workbench_.partView.view().requestRender();
   updateControls();
 }
@@ -129,6 +130,22 @@ void SimulationPlayback::showStatus(const planning::LiveFrame& frame) {
                       .arg(1e3 * frame.displayUpdateSeconds, 0, 'f', 1));
 }
 
+void SimulationPlayback::showOvercut(const planning::LiveFrame& frame) {
+  showOvercut_->setEnabled(frame.largestOvercut.has_value());
+  if (!frame.inspected) {
+    overcut_->setText(tr("Overcut: not inspected (no design state; Raise by stock allowance "
+                         "records one)"));
+  } else if (!frame.largestOvercut) {
+    overcut_->setText(tr("Overcut: none beyond %1 mm so far").arg(params_.overcutToleranceMm));
+  } else {
+    overcut_->setText(tr("Largest overcut so far: %1 mm at pose %2; %3 poses beyond %4 mm")
+                          .arg(frame.largestOvercut->depthMm, 0, 'f', 4)
+                          .arg(frame.largestOvercut->pose)
+                          .arg(frame.overcutPoses)
+                          .arg(params_.overcutToleranceMm));
+  }
+}
+
 void SimulationPlayback::updateControls() {
   const bool active = isActive();
   const bool playing = isPlaying();
@@ -145,6 +162,8 @@ void SimulationPlayback::updateControls() {
   if (!active) {
     status_->setText(tr("No playback"));
     rates_->clear();
+    overcut_->clear();
+    showOvercut_->setEnabled(false);
     collisionLabel_->clear();
     collisions_->clear();
     vConvexity_->clear();

@@ -157,7 +157,7 @@ double GrindingSimulation::recordChanges(const std::vector<int>& touchedFaces) {
         if (heights[at] == shadow_[at]) continue;
         if (!terms) terms.emplace(workpiece_, f);
         volume += terms->column(i, k, shadow_[at], heights[at]);
-        log_.push_back({static_cast<std::uint32_t>(at), shadow_[at]});
+        log_.push_back({static_cast<std::uint32_t>(at), shadow_[at], heights[at]});
         shadow_[at] = heights[at];
       }
     if (terms) markChanged(f);
@@ -262,6 +262,15 @@ std::vector<int> GrindingSimulation::takeChangedFaces() {
   for (int f : faces) changedFlag_[f] = 0;
   std::sort(faces.begin(), faces.end());
   return faces;
+}
+
+std::span<const GrindingSimulation::HeightChange> GrindingSimulation::poseChanges(int pose) const {
+  if (!params_.recordUndo || pose < 0 || pose >= next_)
+    throw InvalidInput("GrindingSimulation::poseChanges: pose " + std::to_string(pose) +
+                       " is not a recorded pose (" + std::to_string(next_) + " cut" +
+                       (params_.recordUndo ? ")" : ", recordUndo off)"));
+  const std::size_t begin = pose == 0 ? 0 : records_[pose - 1].logEnd;
+  return std::span<const HeightChange>(log_).subspan(begin, records_[pose].logEnd - begin);
 }
 
 std::size_t GrindingSimulation::undoMemoryBytes() const {

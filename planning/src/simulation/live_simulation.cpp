@@ -37,6 +37,7 @@ struct LiveSimulation::State {
   GrindingSimulation simulation;
   LiveSimulationParams params;
   std::unique_ptr<ddf::IncrementalTriangulation> display;
+  std::optional<CutInspection> inspection;
   std::thread worker;
   std::atomic<bool> stop{false}, playing{false};
   std::atomic<double> posesPerSecond{30.0};
@@ -56,6 +57,21 @@ struct LiveSimulation::State {
     posesPerSecond = p.posesPerSecond;
     display = std::make_unique<ddf::IncrementalTriangulation>(simulation.workpiece(),
                                                               p.displayEpsMm);
+    if (!p.designHeights.empty()) {
+      ddf::DisplacementField design = simulation.workpiece();
+      if (p.designHeights.size() != design.allHeights().size())
+        throw InvalidInput("LiveSimulation: the design has " +
+                           std::to_string(p.designHeights.size()) + " heights, the part " +
+                           std::to_string(design.allHeights().size()));
+      design.allHeights() = p.designHeights;
+      inspection.emplace(std::move(design), p.overcutToleranceMm);
+    }
+  }
+
+  // Cuts the next pose and inspects it.
+  void cutOne() {
+    simulation.advance(1);
+    if (inspection) inspection->follow(simulation);
   }
 
   double playingSeconds() const {
@@ -113,6 +129,12 @@ void LiveSimulation::State::publish() {
   out->simulatedPosesPerSecond = poseRate();
   out->displayUpdateSeconds = lastUpdateSeconds;
   out->elapsedSeconds = playingSeconds();
+  if (inspection) {
+    inspection->follow(simulation);
+    out->inspected = true;
+    out->largestOvercut = inspection->largest();
+    out->overcutPoses = inspection->overcutPoses();
+  }
   const std::lock_guard lock(frameMutex);
   frame = std::move(out);
 }
@@ -137,7 +159,7 @@ void LiveSimulation::State::run() {
         }
         credit -= 1.0;
       }
-      simulation.advance(1);
+      cutOne();
       notePose(Clock::now());
       if (secondsBetween(lastFrame, Clock::now()) >= params.frameIntervalS) {
         publish();
@@ -194,7 +216,7 @@ bool LiveSimulation::step() {
   pause();
   State& s = *state_;
   if (s.simulation.finished()) return false;
-  s.simulation.advance(1);
+  s.cutOne();
   s.publish();
   return true;
 }

@@ -39,6 +39,9 @@ struct PlaybackParams {
   /// part's bounding-box diagonal (dimensionless). Default 2e-4 (0.02 mm on a 100 mm part), as
   /// DisplayParams::adaptiveEpsFraction.
   double displayEpsFraction = 2e-4;
+  /// Overcut against the project's "design" state up to this depth is within tolerance, mm.
+  /// Default 0.01.
+  double overcutToleranceMm = 0.01;
 };
 
 /// @brief Controls and state of a playback in the Simulation panel. begin() copies the part
@@ -55,8 +58,10 @@ struct PlaybackParams {
 /// and shows the document's surface again. A document edit during playback cancels it.
 /// Child object names: "playButton", "pauseButton", "stepButton", "applyPlaybackButton",
 /// "cancelPlaybackButton", "speedCombo", "timelineSlider", "playbackProgress",
-/// "playbackStatus", "playbackRates", "collisionLabel", "collisionList", "vConvexityList",
-/// "removalList".
+/// "playbackStatus", "playbackRates", "overcutLabel", "showOvercutButton", "collisionLabel",
+/// "collisionList", "vConvexityList", "removalList". With a "design" state in the project
+/// every pose is inspected for overcut against it (planning::CutInspection): the largest so
+/// far with its pose, which "Show" moves the timeline to.
 class SimulationPlayback : public QWidget {
   Q_OBJECT
 
@@ -115,6 +120,7 @@ class SimulationPlayback : public QWidget {
   void showFrame(const planning::LiveFrame& frame);
   void showReport(const planning::GrindingReport& report);
   void showStatus(const planning::LiveFrame& frame);
+  void showOvercut(const planning::LiveFrame& frame);
   void updateControls();
   void restoreDocumentSurface();
   bool checkWorker();
@@ -145,6 +151,8 @@ class SimulationPlayback : public QWidget {
   QProgressBar* progress_ = nullptr;
   QLabel* status_ = nullptr;
   QLabel* rates_ = nullptr;
+  QLabel* overcut_ = nullptr;
+  QPushButton* showOvercut_ = nullptr;
   QLabel* collisionLabel_ = nullptr;
   QListWidget* collisions_ = nullptr;
   QListWidget* vConvexity_ = nullptr;

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace ddfcam::planning {
@@ -97,7 +98,7 @@ struct GrindingReport {
 /// Every pose records the stored heights it changed (shared copies included) with their
 /// previous values, which gives the pass volumes incrementally and lets seek() go back.
 /// Memory: a fixed copy of the heights (4 bytes per stored height) plus, per recorded pose,
-/// 8 bytes per stored height the pose changed and 32 bytes of counters, plus the slack of
+/// 12 bytes per stored height the pose changed and 32 bytes of counters, plus the slack of
 /// vector growth (undoMemoryBytes()). Example: the demo project's 267-pose path on a part of
 /// 235,008 stored heights changes 2,688 heights per pose, 21.5 kB per pose, 5.7 MB in all.
 class GrindingSimulation {
@@ -140,12 +141,19 @@ class GrindingSimulation {
   const GrindingReport& report() const { return report_; }
   const ToolPath& path() const { return path_; }
 
- private:
-  /// One changed stored height: flat index into workpiece().allHeights() and its old value.
+  /// @brief One changed stored height: flat index into workpiece().allHeights(), its value
+  /// before the pose and after it.
   struct HeightChange {
     std::uint32_t index = 0;
     float before = 0.0f;
+    float after = 0.0f;
   };
+  /// @brief The stored heights pose @p pose changed, with their values before and after it
+  /// (its undo log, shared copies included). @throws InvalidInput unless @p pose < nextPose() and
+  /// GrindingSimulationParams::recordUndo is on.
+  std::span<const HeightChange> poseChanges(int pose) const;
+
+ private:
   /// The state after one pose, for truncating the report on a backward seek.
   struct PoseRecord {
     std::size_t logEnd = 0;         // end of the pose's entries in log_

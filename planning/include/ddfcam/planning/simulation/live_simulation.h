@@ -3,11 +3,13 @@
 // cut surface (incremental adaptive triangulation) for a viewer that draws at its own pace.
 #pragma once
 
+#include <ddfcam/planning/simulation/cut_inspection.h>
 #include <ddfcam/planning/simulation/grinding_simulation.h>
 
 #include <cstdint>
 #include <exception>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace ddfcam::planning {
@@ -29,6 +31,9 @@ struct LiveFrame {
   double simulatedPosesPerSecond = 0.0;
   double displayUpdateSeconds = 0.0;  ///< worker time of the last display update, s
   double elapsedSeconds = 0.0;        ///< playing time so far (pauses excluded), s
+  bool inspected = false;  ///< a design was given: the overcut fields below are meaningful
+  std::optional<Overcut> largestOvercut;  ///< deepest overcut of poses 0..posesCut-1
+  int overcutPoses = 0;                   ///< poses that overcut beyond the tolerance
 };
 
 /// @brief Parameters of LiveSimulation.
@@ -41,6 +46,11 @@ struct LiveSimulationParams {
   /// Shortest time between two published frames while playing, s: the display follows at
   /// this rate however fast the simulation runs. Default 1/30.
   double frameIntervalS = 1.0 / 30.0;
+  /// Heights of the design on the workpiece's support (e.g. the "design" state): every pose is
+  /// inspected for overcut against it (CutInspection). Empty: no inspection.
+  std::vector<float> designHeights;
+  /// Overcut up to this depth is within tolerance, mm (>= 0). Default 0.01.
+  double overcutToleranceMm = 0.01;
 };
 
 /// @brief Plays a GrindingSimulation on a worker thread. play() starts cutting at the set rate;
