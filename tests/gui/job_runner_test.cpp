@@ -263,9 +263,10 @@ void JobRunnerTest::widgetShowsElapsedAndRemainingTime() {
   const QString text = label->text();
   QVERIFY2(text.startsWith("long: 25 %, 0:0") && text.contains(" elapsed, about 0:0"),
            qPrintable(text));
-  // "about m:ss left" is three times the elapsed seconds (1.2 s to 1.9 s: 4 to 6 s).
+  // "about m:ss left" is three times the elapsed seconds: 1.8 s here, more on a loaded
+  // machine (a single digit of seconds up to 3.3 s elapsed).
   const int left = text.section("about 0:0", 1).left(1).toInt();
-  QVERIFY2(left >= 3 && left <= 6, qPrintable(text));
+  QVERIFY2(left >= 3 && left <= 9, qPrintable(text));
   runner.cancel();
   QVERIFY(runner.waitForFinished(5000));
 }
