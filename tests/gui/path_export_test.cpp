@@ -220,12 +220,13 @@ class PathExportTest : public QObject {
       QVERIFY(text.contains("UNITS/INCHES"));
       QVERIFY(text.contains(dialect == PathExportDialect::AptNx ? "FEDRAT/IPM," : ",IPM"));
       const planning::ClProgram program = io::readApt(fsPath(written.front()));
-      // APT has no link moves: the retract and approach between the two paths read back as
-      // feed moves (2 points), the lift's rapid as a rapid; each path is one pass.
+      // APT has no link moves: the retract between the two paths reads back as a feed move, the
+      // lift's rapid as a rapid, and the approach ends on the second path's first point, which
+      // is written once (no zero-length GOTO); each path is one pass.
       const auto cuts = cutPoints(program);
       std::vector<planning::PathPose> poses = project().paths[1].poses;
       poses.insert(poses.end(), project().paths[2].poses.begin(), project().paths[2].poses.end());
-      QCOMPARE(cuts.size(), poses.size() + 2);
+      QCOMPARE(cuts.size(), poses.size() + 1);
       std::size_t at = 0;
       for (const auto& pose : poses) {
         const Vec3 reference = pose.pose.translation();

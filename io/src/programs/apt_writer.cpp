@@ -177,12 +177,15 @@ void writeMotion(const planning::ClProgram& program, const AptWriteParams& param
   const int cd = params.coordinateDecimals;
   const std::string feedWord = params.unit == LengthUnit::Inch ? "IPM" : "MMPM";
   std::string lastFeed;
+  std::vector<std::string> lastGoto;
   auto change = program.toolChanges.begin();
   for (std::size_t k = 0; k < program.points.size(); ++k) {
     const planning::ClPoint& p = program.points[k];
     checkPoint(p, k, per);
+    bool toolChanged = false;
     for (; change != program.toolChanges.end() && change->firstPoint <= k; ++change) {
       if (change->firstPoint == k) writeTool(change->cutter, change->toolNumber, params, lines);
+      toolChanged |= change->firstPoint == k;
     }
     if (p.move == MoveKind::Rapid) {
       lines.plain("RAPID");
@@ -199,7 +202,11 @@ void writeMotion(const planning::ClProgram& program, const AptWriteParams& param
     if (p.axis) {
       for (int a = 0; a < 3; ++a) values.push_back(fixed((*p.axis)[a], params.vectorDecimals));
     }
+    // A move to where the tool already is (the first cut point of a pass repeats the end of
+    // its approach) would be a GOTO repeated as written: a post-processor gains nothing from it.
+    if (values == lastGoto && p.move != MoveKind::Rapid && !toolChanged) continue;
     lines.record("GOTO/", values);
+    lastGoto = std::move(values);
   }
 }
 

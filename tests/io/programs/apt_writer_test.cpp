@@ -3,6 +3,7 @@
 #include <ddfcam/error.h>
 #include <ddfcam/io/programs/apt_reader.h>
 #include <ddfcam/io/programs/apt_writer.h>
+#include <ddfcam/planning/placement/cl_program_builder.h>
 #include <ddfcam/planning/placement/cutter_tool.h>
 
 #include <gmock/gmock.h>
@@ -81,6 +82,44 @@ TEST(AptWriter, WritesTheExpectedTextForATinyProgram) {
       "FINI",
   };
   EXPECT_EQ(linesOf(encodeApt(tinyProgram())), expected);
+}
+
+TEST(AptWriter, ALinkedPassStartsWithoutARepeatedGoto) {
+  // Two passes of a ball end along x, 2 mm above z = 0, joined by retract, rapid and approach:
+  // the first cut point of the second pass repeats the approach's end (see clProgramFromPath).
+  planning::ToolPath path;
+  path.name = "two";
+  path.feedMmPerMin = 900;
+  for (const ddf::Vec3 c : {ddf::Vec3(0, 0, 2), ddf::Vec3(5, 0, 2), ddf::Vec3(5, 4, 2),
+                            ddf::Vec3(0, 4, 2)}) {
+    planning::PathPose pose;
+    pose.pose.translation() = c;
+    pose.contact = c - ddf::Vec3(0, 0, 2);
+    path.poses.push_back(pose);
+  }
+  path.passStarts = {0, 2};
+  planning::Tool ball;
+  ball.kind = planning::ToolKind::BallEnd;
+  ball.radiusMm = 2.0;
+  ball.widthMm = 10.0;
+  const planning::ClProgram program = planning::clProgramFromPath(
+      path, ball, planning::ClPointKind::ToolReference, {}, {.clearanceMm = 3});
+  ASSERT_EQ(program.points.size(), 7u);  // 4 cut points, retract, rapid, approach
+  const std::vector<std::string> lines = linesOf(encodeApt(program));
+  std::vector<std::string> gotos;
+  for (const std::string& line : lines)
+    if (line.rfind("GOTO/", 0) == 0) gotos.push_back(line);
+  for (std::size_t g = 1; g < gotos.size(); ++g) EXPECT_NE(gotos[g], gotos[g - 1]) << g;
+  ASSERT_EQ(gotos.size(), 6u);
+  // Read back: the program's positions without the zero-length move, in order.
+  const planning::ClProgram back = decodeApt(encodeApt(program), "two.apt");
+  std::vector<ddf::Vec3> expected;
+  for (const planning::ClPoint& p : program.points)
+    if (expected.empty() || (p.positionMm - expected.back()).norm() > 1e-9)
+      expected.push_back(p.positionMm);
+  ASSERT_EQ(back.points.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    EXPECT_LT((back.points[i].positionMm - expected[i]).norm(), 1e-4) << i;
 }
 
 TEST(AptWriter, WritesInchesAndTheNxFeedOrder) {

@@ -31,8 +31,10 @@ struct AptWriteParams {
 /// program.multiAxis()), then per point CUTTER and LOADTL where a tool change starts
 /// (ClProgram::toolChanges), RAPID (rapid moves), FEDRAT (when the feed of a non-rapid
 /// move changes) and GOTO/x,y,z[,i,j,k]; then COOLNT/OFF, SPINDL/OFF, END, FINI. A point without an
-/// axis in a multi-axis program is written with 3 values (APT keeps the previous axis). Positions
-/// and feeds are converted from mm to params.unit.
+/// axis in a multi-axis program is written with 3 values (APT keeps the previous axis). A
+/// feed or link point whose GOTO would repeat the previous one as written (the first cut point
+/// of a linked pass repeats the end of its approach) is left out: no zero-length moves.
+/// Positions and feeds are converted from mm to params.unit.
 /// @throws InvalidInput for a Contact program (APT needs tool reference points), decimals or
 /// columns out of range, a Metre unit, non-finite positions, feeds or cutter values or ones
 /// of 1e9 file units or more, or a non-unit or non-finite axis (|1 - |a|| > 1e-6).
