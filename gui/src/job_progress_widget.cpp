@@ -2,6 +2,8 @@
 // ddfcam gui: JobProgressWidget, the status-bar progress display of background jobs.
 #include <ddfcam/gui/job_progress_widget.h>
 
+#include <ddfcam/gui/duration_text.h>
+
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
@@ -20,11 +22,6 @@ constexpr int kRefreshMs = 500;  // the label is refreshed at least twice a seco
 constexpr double kEstimateAfterS = 1.0;
 constexpr double kEstimateAfterFraction = 0.01;
 
-QString clockText(double seconds) {
-  const int s = static_cast<int>(std::lround(std::max(0.0, seconds)));
-  if (s >= 3600) return QString("%1:%2:%3").arg(s / 3600).arg(s / 60 % 60, 2, 10, QChar('0')).arg(s % 60, 2, 10, QChar('0'));
-  return QString("%1:%2").arg(s / 60).arg(s % 60, 2, 10, QChar('0'));
-}
 
 }  // namespace
 
@@ -89,10 +86,10 @@ void JobProgressWidget::showProgressText() {
   QString text = tr("%1: %2 %, %3 elapsed")
                      .arg(title_)
                      .arg(static_cast<int>(std::floor(100.0 * fraction_)))
-                     .arg(clockText(seconds));
+                     .arg(durationText(seconds));
   // The remaining time at the average rate so far: jobs report evenly spread fractions.
   if (seconds >= kEstimateAfterS && fraction_ >= kEstimateAfterFraction && fraction_ < 1.0)
-    text += tr(", about %1 left").arg(clockText(seconds * (1.0 - fraction_) / fraction_));
+    text += tr(", about %1 left").arg(durationText(seconds * (1.0 - fraction_) / fraction_));
   label_->setText(text);
 }
 

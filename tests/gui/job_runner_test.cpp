@@ -2,6 +2,7 @@
 // JobRunner and its status-bar widget: commit on the UI thread, prompt cancel, one error report.
 #include "gui_test_registry.h"
 #include <ddfcam/error.h>
+#include <ddfcam/gui/duration_text.h>
 #include <ddfcam/gui/job_progress_widget.h>
 #include <ddfcam/gui/job_runner.h>
 
@@ -65,6 +66,7 @@ class JobRunnerTest : public QObject {
   void destructorCancelsAndJoins();
   void widgetShowsAndCancelsJob();
   void widgetShowsElapsedAndRemainingTime();
+  void durationsReadLikeAClock();
   void widgetReportsDoneAndFailed();
 
  private:
@@ -269,6 +271,15 @@ void JobRunnerTest::widgetShowsElapsedAndRemainingTime() {
   QVERIFY2(left >= 3 && left <= 9, qPrintable(text));
   runner.cancel();
   QVERIFY(runner.waitForFinished(5000));
+}
+
+void JobRunnerTest::durationsReadLikeAClock() {
+  using ddfcam::gui::durationText;
+  QCOMPARE(durationText(7.2), QString("0:07"));
+  QCOMPARE(durationText(750.0), QString("12:30"));
+  QCOMPARE(durationText(3599.4), QString("59:59"));
+  QCOMPARE(durationText(3723.0), QString("1:02:03"));
+  QCOMPARE(durationText(-3.0), QString("0:00"));
 }
 
 void JobRunnerTest::widgetReportsDoneAndFailed() {

@@ -3,6 +3,7 @@
 // events, volumes, timeline, progress with the simulated and the displayed rate).
 #include <ddfcam/gui/panels/simulation_playback.h>
 
+#include <ddfcam/gui/duration_text.h>
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/tool_overlay.h>
 #include <ddfcam/gui/vtk_view.h>
@@ -25,10 +26,6 @@ bool isColliding(const planning::GrindingReport& report, int pose) {
   return std::ranges::binary_search(report.collisions, pose, {}, &planning::CollisionHit::pose);
 }
 
-QString clockText(double seconds) {
-  const int s = static_cast<int>(std::lround(std::max(0.0, seconds)));
-  return QString("%1:%2").arg(s / 60).arg(s % 60, 2, 10, QChar('0'));
-}
 
 // Refills @p list with one item per event (pose, stubble count) unless it already has them.
 template <class Events>
@@ -110,9 +107,9 @@ void SimulationPlayback::showStatus(const planning::LiveFrame& frame) {
   const double rate = frame.simulatedPosesPerSecond > 0.0 ? frame.simulatedPosesPerSecond
                                                           : std::max(posesPerSecond_, 0.0);
   if (frame.elapsedSeconds > 0.0) {
-    text += tr("; %1 elapsed").arg(clockText(frame.elapsedSeconds));
+    text += tr("; %1 elapsed").arg(durationText(frame.elapsedSeconds));
     if (rate > 0.0 && frame.posesCut < frame.totalPoses)
-      text += tr(", about %1 left").arg(clockText((frame.totalPoses - frame.posesCut) / rate));
+      text += tr(", about %1 left").arg(durationText((frame.totalPoses - frame.posesCut) / rate));
   }
   status_->setText(text);
   if (!live_->isPlaying()) {

@@ -5,19 +5,10 @@
 #include <ddfcam/planning/simulation/cut_inspection.h>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 namespace ddfcam::planning {
-namespace {
-
-// Raster coordinates (i, k) of local index @p local of a face with @p steps steps.
-std::pair<int, int> rasterCoord(const ddf::Raster& raster, std::size_t local) {
-  int k = 0;
-  while (k < raster.steps() && raster.rowOffset(k + 1) <= local) ++k;
-  return {static_cast<int>(local - raster.rowOffset(k)), k};
-}
-
-}  // namespace
 
 CutInspection::CutInspection(ddf::DisplacementField design, double toleranceMm)
     : design_(std::move(design)), toleranceMm_(toleranceMm) {
@@ -39,7 +30,9 @@ void CutInspection::addPose(const GrindingSimulation& simulation) {
     const double below = design_.allHeights()[c.index] - c.after;
     if (!(below > 0.0)) continue;
     const int f = static_cast<int>(c.index / per);
-    const auto [i, k] = rasterCoord(design_.raster(), c.index % per);
+    const ddf::RasterCoord at =
+        design_.topology().coord({f, static_cast<std::uint32_t>(c.index % per)});
+    const int i = at.i, k = at.k;
     const ddf::Vec3 v = design_.vectorAt(f, design_.rasterBary(i, k));
     const double depth = below * v.dot(ddf::rasterNormal(design_, f, i, k));
     if (depth > toleranceMm_ && depth > deepest.depthMm)
