@@ -96,6 +96,7 @@ set(DDFCAM_SLOW_TESTS
   ddfcam_simulation_options_tests
   ddfcam_simulation_playback_tests
   ddfcam_spacing_refinement_panel_tests
+  ddfcam_stale_fields_tests
   ddfcam_streamlines_panel_edit_tests
   ddfcam_streamlines_panel_methods_tests
   ddfcam_streamlines_panel_scallop_tests

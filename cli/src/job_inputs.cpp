@@ -13,6 +13,7 @@
 #include <ddfcam/planning/analysis/segmentation.h>
 #include <ddfcam/planning/lines/spacing_refinement.h>
 #include <ddfcam/planning/model/demo_project.h>
+#include <ddfcam/planning/model/field_freshness.h>
 #include <ddfcam/planning/pipeline/region_planning.h>
 
 #include <algorithm>
@@ -36,7 +37,9 @@ RegionPathInfo refinedPath(planning::Project& project, const planning::LineField
   planning::ToolPath path = result.toolPath;
   path.tool = job.plan.tool;
   project.paths.push_back(std::move(path));
-  project.fields.push_back({"refinement error", "mm", true, result.errorField});
+  planning::ScalarField error{"refinement error", "mm", true, result.errorField, {}};
+  planning::markComputedFrom(error, *project.part);
+  project.fields.push_back(std::move(error));
   return info;
 }
 

@@ -4,6 +4,7 @@
 
 #include <ddfcam/error.h>
 #include <ddfcam/planning/analysis/curvature.h>
+#include <ddfcam/planning/model/field_freshness.h>
 #include <ddfcam/planning/model/simulation_states.h>
 #include <ddfcam/planning/simulation/grinding_simulation.h>
 #include <ddfcam/planning/simulation/workpiece.h>
@@ -109,6 +110,7 @@ planning::ErrorStatistics errorMapJob(planning::Project& project, const ErrorMap
   const std::vector<float> desired = design ? design->heights : states[0].heights;
   planning::ScalarField field = planning::deviationMap(*project.part, desired);
   field.name = "deviation";
+  planning::markComputedFrom(field, *project.part);
   const planning::ErrorStatistics stats =
       planning::errorStatistics(field, *project.part, spec.band);
   project.fields.push_back(std::move(field));

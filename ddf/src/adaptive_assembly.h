@@ -46,6 +46,7 @@ class TVertexRemoval {
                      std::vector<int>& poly) const {
     r.triangles.clear();
     r.centroids.clear();
+    r.centroidSums.clear();
     for (const auto& leaf : r.leaves) {
       poly.clear();
       std::array<int, 3> cornerAt{};
@@ -62,7 +63,7 @@ class TVertexRemoval {
         }
         if (poly.size() > before) ++splitEdges, lastSplit = s;
       }
-      emitPolygon(r, vertices, poly, cornerAt, splitEdges, lastSplit);
+      emitPolygon(r, vertices, poly, cornerAt, splitEdges, lastSplit, leaf);
     }
     for (const auto& t : r.finals)
       r.triangles.push_back({r.vertexIndex[t[0]], r.vertexIndex[t[1]], r.vertexIndex[t[2]]});
@@ -87,7 +88,8 @@ class TVertexRemoval {
   }
 
   static void emitPolygon(FaceResult& r, const std::vector<Vec3>& vs, const std::vector<int>& poly,
-                          const std::array<int, 3>& cornerAt, int splitEdges, int lastSplit) {
+                          const std::array<int, 3>& cornerAt, int splitEdges, int lastSplit,
+                          const AdaptiveLeaf& leaf) {
     const int count = static_cast<int>(poly.size());
     if (splitEdges == 0) {
       r.triangles.push_back({poly[0], poly[1], poly[2]});
@@ -100,6 +102,12 @@ class TVertexRemoval {
       const int centroid = -static_cast<int>(r.centroids.size()) - 1;
       r.centroids.push_back(
           (vs[poly[cornerAt[0]]] + vs[poly[cornerAt[1]]] + vs[poly[cornerAt[2]]]) / 3.0);
+      std::array<std::int64_t, 2> sum{0, 0};
+      for (int corner : leaf.corner) {
+        sum[0] += r.vertices[corner].I;
+        sum[1] += r.vertices[corner].K;
+      }
+      r.centroidSums.push_back(sum);
       for (int p = 0; p < count; ++p)
         r.triangles.push_back({poly[p], poly[(p + 1) % count], centroid});
     }
@@ -112,5 +120,14 @@ class TVertexRemoval {
 
 /// @brief The leaves and sub-cell triangles of @p r as mesh triangles (no T-vertex removal).
 void leafTriangles(FaceResult& r);
+
+/// @brief Parameter position (i, k) in raster steps on face @p f of every corner of
+/// r.triangles (after retriangulate(): mesh vertices, -(c+1) for centroid c, placed at the mean
+/// of its leaf's corners). A vertex of the face's own subdivision has its lattice position; a
+/// vertex another face put on a shared support edge is placed from its border key, which
+/// @p slotKey gives per mesh vertex (borderKey()).
+void cornerParams(const DisplacementField& ddf, std::int64_t scale, int f, const FaceResult& r,
+                  const std::vector<std::uint64_t>& slotKey,
+                  std::vector<std::array<std::array<float, 2>, 3>>& out);
 
 }  // namespace ddfcam::ddf::detail

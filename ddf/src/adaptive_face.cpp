@@ -23,6 +23,14 @@ double along(const FaceVertex& a, const FaceVertex& b, std::int64_t xi, std::int
 
 }  // namespace
 
+double AdaptiveContext::edgeEps(int face, int side) const {
+  if (!faceEps) return eps;
+  double out = (*faceEps)[face];
+  for (int g : ddf->topology().edgeFaces(ddf->topology().faceEdge(face, side)))
+    if (g >= 0) out = std::min(out, static_cast<double>((*faceEps)[g]));
+  return out;
+}
+
 int borderSide(std::int64_t I, std::int64_t K, std::int64_t steps) {
   const bool s0 = K == 0, s1 = I == 0, s2 = I + K == steps;
   if (static_cast<int>(s0) + static_cast<int>(s1) + static_cast<int>(s2) != 1) return -1;
@@ -106,10 +114,11 @@ bool FaceSubdivider::edgeGood(int index) {
   const FaceVertex& B = verts_[e.b];
   double worst = 0.0;
   bool ok = true;
+  const double eps = e.support >= 0 ? ctx_->edgeEps(face_, e.support) : ctx_->epsOf(face_);
   forEachSampleOnEdge(e.a, e.b, [&](std::int64_t I, std::int64_t K) {
     const Vec3 truth = ddfPoint(I, K, e.support);
     const double d = (lerp(A.position, B.position, along(A, B, I, K)) - truth).norm();
-    ok = d <= ctx_->eps;  // NaN fails, so broken heights get refined instead of hidden
+    ok = d <= eps;  // NaN fails, so broken heights get refined instead of hidden
     worst = std::max(worst, d);
     return ok;
   });
@@ -155,6 +164,7 @@ bool FaceSubdivider::accept(const Tri& t, double& err) {
   const Vec3& qa = verts_[t.v[0]].position;
   const Vec3& qb = verts_[t.v[1]].position;
   const Vec3& qc = verts_[t.v[2]].position;
+  const double eps = ctx_->epsOf(face_);
   bool ok = true;
   forEachRasterInside(t.v, [&](int local, std::int64_t, std::int64_t, std::int64_t wa,
                                std::int64_t wb, std::int64_t wc, std::int64_t area) {
@@ -162,7 +172,7 @@ bool FaceSubdivider::accept(const Tri& t, double& err) {
                          static_cast<double>(wc) * qc) /
                         static_cast<double>(area);
     const double d = (approx - q_[local]).norm();
-    ok = d <= ctx_->eps;
+    ok = d <= eps;
     worst = std::max(worst, d);
     return ok;
   });

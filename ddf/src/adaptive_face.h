@@ -22,6 +22,14 @@ struct AdaptiveContext {
   double eps = 0.01;                            ///< error bound, mm
   std::int64_t scale = 1;                       ///< sub-lattice steps per raster step
   bool collectChains = true;  ///< record the vertices on leaf edges (for T-vertex removal)
+  /// Error bound per support face, mm; null: eps everywhere. A support edge is held to the
+  /// smaller bound of its two faces, so both decide it alike (no cracks between bounds).
+  const std::vector<float>* faceEps = nullptr;
+
+  /// @brief The bound of face @p face's interior, mm.
+  double epsOf(int face) const { return faceEps ? (*faceEps)[face] : eps; }
+  /// @brief The bound of local support side @p side of face @p face, mm.
+  double edgeEps(int face, int side) const;
 };
 
 /// @brief A vertex of one face: scaled parameter position and surface position (mm).
@@ -52,6 +60,8 @@ struct FaceResult {
   std::vector<int> vertexIndex;               ///< mesh vertex of each slot
   std::vector<std::array<int, 3>> triangles;  ///< mesh triangles; -(c+1) refers to centroid c
   std::vector<Vec3> centroids;                ///< added leaf centroids, mm
+  /// Sum of the scaled parameter positions (I, K) of each centroid's leaf corners.
+  std::vector<std::array<std::int64_t, 2>> centroidSums;
 };
 
 /// @brief Side (local support edge 0, 1, 2) of a scaled position on the border of a face, or

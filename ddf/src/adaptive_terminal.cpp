@@ -178,7 +178,7 @@ void FaceSubdivider::terminal(const Tri& t) {
   for (;;) {
     int index = -1;
     const double w = worstInner(tris, inner, index);
-    if (index < 0 || w <= ctx_->eps) {
+    if (index < 0 || w <= ctx_->epsOf(face_)) {
       worst = std::max(worst, index < 0 ? 0.0 : w);
       break;
     }

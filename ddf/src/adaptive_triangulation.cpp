@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <string>
 
 #include "adaptive_assembly.h"
@@ -157,15 +158,28 @@ void concatenate(std::vector<FaceResult>& results, AdaptiveTriangulation& out) {
 
 }  // namespace
 
+void checkFaceEps(const DisplacementField& ddf, std::span<const float> faceEpsMm) {
+  if (faceEpsMm.empty()) return;
+  if (faceEpsMm.size() != static_cast<std::size_t>(ddf.faceCount()))
+    throw InvalidInput("adaptive triangulation: " + std::to_string(faceEpsMm.size()) +
+                       " face error bounds for " + std::to_string(ddf.faceCount()) + " faces");
+  for (std::size_t f = 0; f < faceEpsMm.size(); ++f)
+    if (!(faceEpsMm[f] > 0.0f) || !std::isfinite(faceEpsMm[f]))
+      throw InvalidInput("adaptive triangulation: the error bound of face " + std::to_string(f) +
+                         " must be positive, got " + std::to_string(faceEpsMm[f]));
+}
+
 AdaptiveTriangulation triangulateAdaptiveWithStats(const DisplacementField& ddf,
                                                    const AdaptiveTriangulationParams& params) {
   if (!(params.epsMm > 0.0)) {
     throw InvalidInput("adaptive triangulation: error bound epsMm must be positive, got " +
                        std::to_string(params.epsMm));
   }
+  checkFaceEps(ddf, params.faceEpsMm);
   const detail::PointOwners owners(ddf);
   const std::vector<Vec3> boundary = detail::canonicalBoundaryPoints(ddf, owners);
   detail::AdaptiveContext ctx;
+  if (!params.faceEpsMm.empty()) ctx.faceEps = &params.faceEpsMm;
   ctx.ddf = &ddf;
   ctx.boundary = &boundary;
   ctx.eps = params.epsMm;

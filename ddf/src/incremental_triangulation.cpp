@@ -55,6 +55,7 @@ struct IncrementalTriangulation::State {
   detail::AdaptiveContext ctx;
   std::vector<FaceResult> results;
   std::vector<std::vector<std::array<int, 3>>> triangles;      // per face, slots
+  std::vector<std::vector<TriangleParams>> params;             // per face, per triangle
   std::vector<std::vector<int>> centroidSlots;                 // per face
   std::vector<std::vector<std::pair<int, Vec3>>> normalParts;  // per face, sorted by slot
   std::vector<Vec3> vertices, normals;
@@ -62,6 +63,7 @@ struct IncrementalTriangulation::State {
   std::vector<int> slotRefs, slotFace, freeSlots;
   std::unordered_map<std::uint64_t, int> keySlot;
   std::vector<EdgeList> edgeLists;
+  std::vector<float> faceEps;  // the bound of every face, mm (ctx.faceEps points here)
 
   explicit State(const DisplacementField& field) : ddf(&field), owners(field) {}
 
@@ -74,6 +76,7 @@ struct IncrementalTriangulation::State {
   void reassemble(const std::vector<int>& faces);
   void facesOfSlot(int slot, std::vector<int>& out) const;
   void refreshNormals(const std::vector<int>& slots);
+  TriangulationUpdate rebuild(std::vector<int> subdivided, bool heightsChanged);
   std::vector<int> starOf(std::span<const int> faces) const;
   std::vector<int> edgeNeighbours(const std::vector<int>& faces) const;
 };
@@ -188,6 +191,7 @@ void IncrementalTriangulation::State::reassemble(const std::vector<int>& faces) 
   }
   tbb::parallel_for(std::size_t{0}, faces.size(), [&](std::size_t at) {
     const int f = faces[at];
+    detail::cornerParams(*ddf, ctx.scale, f, results[f], slotKey, params[f]);
     std::vector<std::pair<int, Vec3>> parts;
     for (const auto& t : triangles[f]) {
       const Vec3 n = (vertices[t[1]] - vertices[t[0]]).cross(vertices[t[2]] - vertices[t[0]]);
@@ -272,11 +276,14 @@ IncrementalTriangulation::IncrementalTriangulation(const DisplacementField& ddf,
   s.ctx.ddf = &ddf;
   s.ctx.boundary = &s.boundary;
   s.ctx.eps = epsMm;
+  // Until setFaceEps() the uniform bound (a double) decides, bit for bit as a fresh build.
+  s.faceEps.assign(static_cast<std::size_t>(ddf.faceCount()), static_cast<float>(epsMm));
   s.ctx.collectChains = true;
   while (s.ctx.scale < ddf.raster().steps()) s.ctx.scale *= 2;
   const int faces = ddf.faceCount();
   s.results.resize(faces);
   s.triangles.resize(faces);
+  s.params.resize(faces);
   s.centroidSlots.resize(faces);
   s.normalParts.resize(faces);
   s.edgeLists.resize(ddf.support().n_edges());
@@ -294,24 +301,48 @@ IncrementalTriangulation::IncrementalTriangulation(IncrementalTriangulation&&) n
 IncrementalTriangulation& IncrementalTriangulation::operator=(IncrementalTriangulation&&) noexcept =
     default;
 
-TriangulationUpdate IncrementalTriangulation::update(std::span<const int> changedFaces) {
+TriangulationUpdate IncrementalTriangulation::State::rebuild(std::vector<int> subdivided,
+                                                             bool heightsChanged) {
   const auto start = std::chrono::steady_clock::now();
-  State& s = *state_;
   TriangulationUpdate out;
-  out.subdividedFaces = s.starOf(changedFaces);
-  out.reassembledFaces = s.edgeNeighbours(out.subdividedFaces);
+  out.subdividedFaces = std::move(subdivided);
+  out.reassembledFaces = edgeNeighbours(out.subdividedFaces);
   std::vector<int> touched;
   for (int f : out.reassembledFaces)
-    for (const auto& t : s.triangles[f]) touched.insert(touched.end(), t.begin(), t.end());
-  s.refreshBoundary(out.subdividedFaces);
-  s.subdivide(out.subdividedFaces);
-  s.reassemble(out.reassembledFaces);
+    for (const auto& t : triangles[f]) touched.insert(touched.end(), t.begin(), t.end());
+  if (heightsChanged) refreshBoundary(out.subdividedFaces);
+  subdivide(out.subdividedFaces);
+  reassemble(out.reassembledFaces);
   for (int f : out.reassembledFaces)
-    for (const auto& t : s.triangles[f]) touched.insert(touched.end(), t.begin(), t.end());
+    for (const auto& t : triangles[f]) touched.insert(touched.end(), t.begin(), t.end());
   out.touchedSlots = sortedUnique(std::move(touched));
-  s.refreshNormals(out.touchedSlots);
+  refreshNormals(out.touchedSlots);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+TriangulationUpdate IncrementalTriangulation::update(std::span<const int> changedFaces) {
+  return state_->rebuild(state_->starOf(changedFaces), true);
+}
+
+TriangulationUpdate IncrementalTriangulation::setFaceEps(std::span<const float> epsMm) {
+  State& s = *state_;
+  checkFaceEps(*s.ddf, epsMm);
+  if (epsMm.empty()) throw InvalidInput("IncrementalTriangulation::setFaceEps: no bounds");
+  std::vector<int> changed;
+  for (std::size_t f = 0; f < epsMm.size(); ++f)
+    if (static_cast<double>(epsMm[f]) != s.ctx.epsOf(static_cast<int>(f)))
+      changed.push_back(static_cast<int>(f));
+  std::copy(epsMm.begin(), epsMm.end(), s.faceEps.begin());
+  s.ctx.faceEps = &s.faceEps;
+  if (changed.empty()) return {};
+  // A bound moves the decisions inside its face and on its edges: those faces and the faces
+  // across the edges are subdivided again; the points they share do not move.
+  return s.rebuild(s.edgeNeighbours(changed), false);
+}
+
+const std::vector<float>& IncrementalTriangulation::faceEps() const {
+  return state_->faceEps;
 }
 
 double IncrementalTriangulation::epsMm() const {
@@ -328,6 +359,10 @@ const std::vector<Vec3>& IncrementalTriangulation::normals() const {
 
 const std::vector<std::array<int, 3>>& IncrementalTriangulation::faceTriangles(int face) const {
   return state_->triangles.at(static_cast<std::size_t>(face));
+}
+
+const std::vector<TriangleParams>& IncrementalTriangulation::faceTriangleParams(int face) const {
+  return state_->params.at(static_cast<std::size_t>(face));
 }
 
 std::size_t IncrementalTriangulation::triangleCount() const {

@@ -3,6 +3,7 @@
 #include <ddfcam/gui/adapters/live_surface.h>
 #include <ddfcam/gui/adapters/poly_data.h>
 
+#include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkFloatArray.h>
@@ -10,6 +11,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkRenderer.h>
 #include <vtkTypeInt32Array.h>
 
 #include <algorithm>
@@ -29,7 +31,10 @@ void copyFloats(vtkFloatArray* array, const std::vector<float>& values) {
 
 }  // namespace
 
-LiveSurfacePolyData::LiveSurfacePolyData() : data_(vtkSmartPointer<vtkPolyData>::New()) {
+LiveSurfacePolyData::LiveSurfacePolyData(int faceCount, int rasterSteps)
+    : data_(vtkSmartPointer<vtkPolyData>::New()) {
+  if (RasterTextureAtlas::fits(faceCount, rasterSteps))
+    atlas_ = std::make_unique<RasterTextureAtlas>(faceCount, rasterSteps);
   auto positions = vtkSmartPointer<vtkFloatArray>::New();
   positions->SetNumberOfComponents(3);
   auto points = vtkSmartPointer<vtkPoints>::New();
@@ -45,22 +50,88 @@ LiveSurfacePolyData::LiveSurfacePolyData() : data_(vtkSmartPointer<vtkPolyData>:
   auto cells = vtkSmartPointer<vtkCellArray>::New();
   cells->Use32BitStorage();
   data_->SetPolys(cells);
+  auto tcoords = vtkSmartPointer<vtkFloatArray>::New();
+  tcoords->SetName("tolerance texture coordinates");
+  tcoords->SetNumberOfComponents(2);
+  data_->GetPointData()->SetTCoords(tcoords);
+}
+
+LiveSurfacePolyData::~LiveSurfacePolyData() {
+  if (renderer_) renderer_->RemoveObserver(observer_);
+}
+
+void LiveSurfacePolyData::uploadBeforeRendering(vtkRenderer* renderer) {
+  if (!atlas_ || !renderer) return;
+  if (renderer_) renderer_->RemoveObserver(observer_);
+  renderer_ = renderer;
+  auto command = vtkSmartPointer<vtkCallbackCommand>::New();
+  command->SetClientData(atlas_.get());
+  command->SetCallback([](vtkObject*, unsigned long, void* atlas, void*) {
+    static_cast<RasterTextureAtlas*>(atlas)->uploadChanged();
+  });
+  observer_ = renderer->AddObserver(vtkCommand::StartEvent, command);
+}
+
+vtkTexture* LiveSurfacePolyData::texture() const {
+  return atlas_ ? atlas_->texture() : nullptr;
 }
 
 void LiveSurfacePolyData::apply(const planning::LiveFrame& frame) {
+  const bool textured = atlas_ && !frame.toleranceClasses.empty() &&
+                        frame.cornerParams.size() == 2 * frame.triangles.size();
+  if (textured)
+    applyTextured(frame);
+  else
+    applyShared(frame);
+}
+
+void LiveSurfacePolyData::applyTextured(const planning::LiveFrame& frame) {
+  atlas_->setClasses(frame.toleranceClasses);
+  const std::size_t corners = frame.triangles.size();
+  auto* positions = vtkFloatArray::SafeDownCast(data_->GetPoints()->GetData());
+  auto* normals = vtkFloatArray::SafeDownCast(data_->GetPointData()->GetNormals());
+  auto* tcoords = vtkFloatArray::SafeDownCast(data_->GetPointData()->GetTCoords());
+  for (vtkFloatArray* a : {positions, normals}) a->SetNumberOfTuples(static_cast<vtkIdType>(corners));
+  tcoords->SetNumberOfTuples(static_cast<vtkIdType>(corners));
+  float* p = positions->GetPointer(0);
+  float* n = normals->GetPointer(0);
+  float* t = tcoords->GetPointer(0);
+  for (std::size_t c = 0; c < corners; ++c) {
+    const std::size_t slot = 3 * static_cast<std::size_t>(frame.triangles[c]);
+    std::memcpy(p + 3 * c, frame.positions.data() + slot, 3 * sizeof(float));
+    std::memcpy(n + 3 * c, frame.normals.data() + slot, 3 * sizeof(float));
+    const auto st = atlas_->texCoord(frame.triangleFace[c / 3], frame.cornerParams[2 * c],
+                                     frame.cornerParams[2 * c + 1]);
+    t[2 * c] = st[0];
+    t[2 * c + 1] = st[1];
+  }
+  for (vtkFloatArray* a : {positions, normals, tcoords}) a->Modified();
+  data_->GetPoints()->Modified();
+  setCells(frame, true);
+}
+
+void LiveSurfacePolyData::applyShared(const planning::LiveFrame& frame) {
   auto* positions = vtkFloatArray::SafeDownCast(data_->GetPoints()->GetData());
   copyFloats(positions, frame.positions);
   data_->GetPoints()->Modified();
   copyFloats(vtkFloatArray::SafeDownCast(data_->GetPointData()->GetNormals()), frame.normals);
+  vtkFloatArray::SafeDownCast(data_->GetPointData()->GetTCoords())->SetNumberOfTuples(0);
+  setCells(frame, false);
+}
+
+void LiveSurfacePolyData::setCells(const planning::LiveFrame& frame, bool ownCorners) {
   const vtkIdType triangles = static_cast<vtkIdType>(frame.triangleFace.size());
   auto offsets = vtkSmartPointer<vtkTypeInt32Array>::New();
   offsets->SetNumberOfValues(triangles + 1);
   for (vtkIdType t = 0; t <= triangles; ++t) offsets->SetValue(t, static_cast<int>(3 * t));
   auto connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
   connectivity->SetNumberOfValues(3 * triangles);
-  if (triangles > 0)
+  if (ownCorners) {
+    for (vtkIdType c = 0; c < 3 * triangles; ++c) connectivity->SetValue(c, static_cast<int>(c));
+  } else if (triangles > 0) {
     std::memcpy(connectivity->GetPointer(0), frame.triangles.data(),
                 frame.triangles.size() * sizeof(std::int32_t));
+  }
   data_->GetPolys()->SetData(offsets, connectivity);
   auto* faces = vtkIntArray::SafeDownCast(data_->GetCellData()->GetArray(kFaceArrayName));
   faces->SetNumberOfValues(triangles);

@@ -53,6 +53,18 @@ std::array<double, 3> toleranceColourAt(double valueMm, double loMm, double hiMm
   return kInBand;
 }
 
+std::array<double, 3> toleranceClassColour(planning::ToleranceClass toleranceClass) {
+  switch (toleranceClass) {
+    case planning::ToleranceClass::MaterialLeft:
+      return mix(kLeftLight, kLeftDark, 0.5);
+    case planning::ToleranceClass::Overcut:
+      return mix(kOvercutLight, kOvercutDark, 0.5);
+    case planning::ToleranceClass::InTolerance:
+      break;
+  }
+  return kInBand;
+}
+
 planning::ToleranceClass toleranceClassOfColour(const std::array<double, 3>& rgb) {
   if (rgb[1] > rgb[0] && rgb[1] > rgb[2]) return planning::ToleranceClass::InTolerance;
   return rgb[2] > rgb[0] ? planning::ToleranceClass::MaterialLeft

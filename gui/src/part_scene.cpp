@@ -24,6 +24,7 @@
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
 #include <vtkScalarBarActor.h>
+#include <vtkTextProperty.h>
 
 #include <algorithm>
 #include <cmath>
@@ -164,6 +165,12 @@ PartScene::~PartScene() {
 void PartScene::setGeometry(const SceneGeometry& geometry) {
   clearSurfaceField();
   surface_ = geometry.surface;
+  vtkActor* surfaceActor = actors_[static_cast<int>(Layer::Surface)];
+  surfaceActor->SetTexture(geometry.surfaceTexture);
+  if (geometry.surfaceTexture)
+    surfaceActor->GetProperty()->SetColor(1.0, 1.0, 1.0);  // the texture's colours, lit
+  else
+    styleSurface(surfaceActor->GetProperty());
   const std::array<vtkPolyData*, kLayerCount> data = {geometry.surface, geometry.support,
                                                       geometry.stubbles};
   for (int l = 0; l < kLayerCount; ++l) {
@@ -242,6 +249,10 @@ void PartScene::setSurfaceField(const std::vector<float>& perVertexValues,
   scalarBar_->SetLookupTable(table);
   scalarBar_->SetLabelFormat(scaleLabelFormat(style.lo, style.hi).c_str());
   scalarBar_->SetTitle(style.title.c_str());
+  if (style.stale)
+    scalarBar_->GetTitleTextProperty()->SetColor(1.0, 0.62, 0.15);
+  else
+    scalarBar_->GetTitleTextProperty()->SetColor(0.93, 0.93, 0.93);
   scalarBar_->SetVisibility(1);
   fieldShown_ = true;
 }

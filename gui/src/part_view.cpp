@@ -7,6 +7,7 @@
 #include <ddfcam/gui/adapters/poly_data.h>
 #include <ddfcam/gui/part_scene.h>
 #include <ddfcam/gui/vtk_view.h>
+#include <ddfcam/planning/model/field_freshness.h>
 #include <ddfcam/planning/model/field_statistics.h>
 
 #include <algorithm>
@@ -48,8 +49,11 @@ const planning::ScalarField* findField(const planning::Project& project, const s
   return nullptr;
 }
 
-std::string fieldTitle(const planning::ScalarField& field) {
-  return field.unit.empty() ? field.name : field.name + " [" + field.unit + "]";
+std::string fieldTitle(const planning::ScalarField& field, bool stale) {
+  const std::string title =
+      field.unit.empty() ? field.name : field.name + " [" + field.unit + "]";
+  // The colours stay (they show where the field was), but nobody should read them as current.
+  return stale ? title + " - STALE: heights changed, recompute" : title;
 }
 
 }  // namespace
@@ -189,7 +193,8 @@ void PartView::applyFieldDisplay() {
   style.map = display_.map;
   style.lo = display_.lo;
   style.hi = display_.hi;
-  style.title = fieldTitle(*field);
+  style.stale = planning::isStale(*field, *p.part);
+  style.title = fieldTitle(*field, style.stale);
   style.band = display_.band;
   scene_->setSurfaceField(ddf::valuesAtSamples(*p.part, field->values, geometry_->surfaceSamples),
                           style);

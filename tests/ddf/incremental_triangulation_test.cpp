@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -50,8 +51,12 @@ AdaptiveTriangulation fresh(const DisplacementField& field, double eps) {
 }
 
 ::testing::AssertionResult sameAsFresh(const DisplacementField& field,
-                                       const IncrementalTriangulation& live, double eps) {
-  const auto expected = byFace(fresh(field, eps), field.faceCount());
+                                       const IncrementalTriangulation& live, double eps,
+                                       const std::vector<float>& faceEps = {}) {
+  AdaptiveTriangulationParams params;
+  params.epsMm = eps;
+  params.faceEpsMm = faceEps;
+  const auto expected = byFace(triangulateAdaptiveWithStats(field, params), field.faceCount());
   const auto actual = byFace(live, field.faceCount());
   for (int f = 0; f < field.faceCount(); ++f) {
     if (expected[f].size() != actual[f].size())
@@ -97,6 +102,28 @@ DisplacementField icosphereDdf(int m) {
   return ellipsoidPart(params).ddf;
 }
 
+// Every raster point's surface point lies within its face's bound of that face's triangles
+// (brute force over the triangles).
+::testing::AssertionResult withinFaceBounds(const DisplacementField& field,
+                                            const IncrementalTriangulation& live,
+                                            const std::vector<float>& bounds) {
+  const int n = field.raster().steps();
+  for (int f = 0; f < field.faceCount(); ++f)
+    for (int k = 0; k <= n; ++k)
+      for (int i = 0; i + k <= n; ++i) {
+        const Vec3 q = field.surfacePoint(f, i, k);
+        double best = 1e300;
+        for (const auto& t : live.faceTriangles(f))
+          best = std::min(best, test::pointTriangleDistance(q, live.vertices()[t[0]],
+                                                            live.vertices()[t[1]],
+                                                            live.vertices()[t[2]]));
+        if (best > bounds[f] + 1e-9)
+          return ::testing::AssertionFailure() << "face " << f << " point (" << i << ", " << k
+                                               << ") " << best << " mm from the mesh";
+      }
+  return ::testing::AssertionSuccess();
+}
+
 TEST(IncrementalTriangulation, StartsAsTheFreshBuild) {
   const DisplacementField field = test::sphereDdf(17);
   const IncrementalTriangulation live(field, 0.002);
@@ -131,18 +158,7 @@ TEST(IncrementalTriangulation, AfterCutsIsClosedWithinTheBoundWithTheFreshNormal
   EXPECT_TRUE(test::isClosedManifold(snap.mesh, 2));  // no cracks, no T-vertices
   EXPECT_LE(snap.maxErrorMm, 0.003);
   // Every raster point lies within the bound of its face's triangles (brute force).
-  const int n = field.raster().steps();
-  for (int f = 0; f < field.faceCount(); ++f)
-    for (int k = 0; k <= n; ++k)
-      for (int i = 0; i + k <= n; ++i) {
-        const Vec3 q = field.surfacePoint(f, i, k);
-        double best = 1e300;
-        for (const auto& t : live.faceTriangles(f))
-          best = std::min(best, test::pointTriangleDistance(q, live.vertices()[t[0]],
-                                                            live.vertices()[t[1]],
-                                                            live.vertices()[t[2]]));
-        ASSERT_LE(best, 0.003 + 1e-9) << "face " << f << " point (" << i << ", " << k << ")";
-      }
+  EXPECT_TRUE(withinFaceBounds(field, live, std::vector<float>(field.faceCount(), 0.003f)));
   // Normals: those of the welded fresh mesh at the same positions.
   const std::vector<Vec3> expected = meshNormals(snap.mesh);
   std::vector<int> slotOf(snap.mesh.vertices.size(), -1);
@@ -184,6 +200,103 @@ TEST(IncrementalTriangulation, UpdatesOnlyTheNeighbourhoodOfTheCut) {
   const TriangulationUpdate none = live.update({});
   EXPECT_TRUE(none.subdividedFaces.empty());
   EXPECT_TRUE(none.touchedSlots.empty());
+}
+
+// The DDF surface at a parameter position (i, k) in raster steps: the raster mesh (fig. 7.1a),
+// piecewise linear over the raster's triangles, from the field's own surface points.
+Vec3 rasterMeshAt(const DisplacementField& field, int f, double u, double w) {
+  const int n = field.raster().steps();
+  const int i0 = std::clamp(static_cast<int>(std::floor(u)), 0, n - 1);
+  const int k0 = std::clamp(static_cast<int>(std::floor(w)), 0, n - 1 - i0);
+  const double fi = u - i0, fk = w - k0;
+  auto q = [&](int i, int k) { return field.surfacePoint(f, i, k); };
+  if (fi + fk <= 1.0 || i0 + k0 + 2 > n)
+    return (1.0 - fi - fk) * q(i0, k0) + fi * q(i0 + 1, k0) + fk * q(i0, k0 + 1);
+  return (fi + fk - 1.0) * q(i0 + 1, k0 + 1) + (1.0 - fk) * q(i0 + 1, k0) +
+         (1.0 - fi) * q(i0, k0 + 1);
+}
+
+// Where each corner lies on its face's raster: inside the face, and on the raster mesh there
+// within the error bound (DDF points exactly; straight midpoints, which may sit on lattice
+// positions too, and centroids approximate it as the triangles do). With a bound well below
+// the raster spacing a wrong position would be off by a spacing.
+::testing::AssertionResult paramsMatchPositions(const DisplacementField& field,
+                                                const IncrementalTriangulation& live,
+                                                double eps) {
+  const int n = field.raster().steps();
+  for (int f = 0; f < field.faceCount(); ++f) {
+    const auto& tris = live.faceTriangles(f);
+    const auto& params = live.faceTriangleParams(f);
+    if (params.size() != tris.size())
+      return ::testing::AssertionFailure() << "face " << f << ": " << params.size()
+                                           << " parameter triples for " << tris.size();
+    for (std::size_t t = 0; t < tris.size(); ++t)
+      for (int c = 0; c < 3; ++c) {
+        const double u = params[t][c][0], w = params[t][c][1];
+        if (u < -1e-6 || w < -1e-6 || u + w > n + 1e-5)
+          return ::testing::AssertionFailure() << "face " << f << " corner at (" << u << ", "
+                                               << w << ") outside the face";
+        const Vec3& at = live.vertices()[tris[t][c]];
+        const double d = (at - rasterMeshAt(field, f, u, w)).norm();
+        if (d > eps + 1e-9)
+          return ::testing::AssertionFailure()
+                 << "face " << f << " triangle " << t << " corner " << c << " at (" << u << ", "
+                 << w << "): " << d << " mm from the raster mesh there";
+      }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+TEST(IncrementalTriangulation, CornerParametersPlaceEveryVertexOnItsFacesRaster) {
+  for (const int m : {9, 12}) {
+    DisplacementField field = icosphereDdf(m);
+    CrustHash hash(field);
+    // The raster spacing is about 0.07 / m mm on this sphere.
+    const double eps = 0.0005;
+    IncrementalTriangulation live(field, eps);
+    ASSERT_TRUE(paramsMatchPositions(field, live, eps)) << "m = " << m << ", fresh";
+    std::mt19937 rng(m + 100);
+    for (int cut = 0; cut < 8; ++cut) {
+      live.update(cutByMesh(field, hash, randomCutter(rng), Eigen::Isometry3d::Identity())
+                      .touchedFaces);
+      ASSERT_TRUE(paramsMatchPositions(field, live, eps)) << "m = " << m << ", cut " << cut;
+    }
+  }
+}
+
+// A level of detail per face (as a view sets it): after cuts and bound changes in any order the
+// mesh is the fresh build with those bounds, crack-free without T-vertices, every raster point
+// within its own face's bound, and coarse bounds give fewer triangles.
+TEST(IncrementalTriangulation, PerFaceBoundsGiveTheFreshBuildWithThoseBounds) {
+  DisplacementField field = icosphereDdf(9);
+  CrustHash hash(field);
+  IncrementalTriangulation live(field, 0.002);
+  const std::size_t fine = live.triangleCount();
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> level(0, 3);
+  std::vector<float> bounds(static_cast<std::size_t>(field.faceCount()));
+  for (int round = 0; round < 4; ++round) {
+    live.update(cutByMesh(field, hash, randomCutter(rng), Eigen::Isometry3d::Identity())
+                    .touchedFaces);
+    for (float& b : bounds) b = 0.002f * static_cast<float>(1 << (2 * level(rng)));
+    const TriangulationUpdate update = live.setFaceEps(bounds);
+    EXPECT_FALSE(update.subdividedFaces.empty());
+    ASSERT_TRUE(sameAsFresh(field, live, 0.002, bounds)) << "round " << round;
+    EXPECT_EQ(live.faceEps(), bounds);
+    const AdaptiveTriangulation snap = live.snapshot();
+    ASSERT_TRUE(test::isClosedManifold(snap.mesh, 2)) << "round " << round;
+    ASSERT_TRUE(withinFaceBounds(field, live, bounds)) << "round " << round;
+    ASSERT_TRUE(paramsMatchPositions(field, live, 0.002 * 64)) << "round " << round;
+  }
+  // All coarse: far fewer triangles than the fine start; the same bounds again change nothing.
+  std::fill(bounds.begin(), bounds.end(), 0.128f);
+  live.setFaceEps(bounds);
+  EXPECT_LT(3 * live.triangleCount(), fine);
+  EXPECT_TRUE(live.setFaceEps(bounds).subdividedFaces.empty());
+  const std::vector<float> wrongSize(3, 0.01f);
+  EXPECT_THROW(live.setFaceEps(wrongSize), InvalidInput);
+  bounds[5] = 0.0f;
+  EXPECT_THROW(live.setFaceEps(bounds), InvalidInput);
 }
 
 TEST(IncrementalTriangulation, RejectsABadBoundAndABadFace) {

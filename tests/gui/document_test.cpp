@@ -82,7 +82,7 @@ void DocumentTest::resetValidatesFirst() {
   QSignalSpy path(&document, &Document::filePathChanged);
 
   planning::Project bad;
-  bad.fields.push_back({"orphan", "", false, {1.0f}});  // a field without a part
+  bad.fields.push_back({"orphan", "", false, {1.0f}, {}});  // a field without a part
   QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput, document.reset(bad, "projects/other.ddfproj"));
   QVERIFY(planning::projectsEqual(document.project(), before));
   QCOMPARE(document.filePath(), QString("projects/plane.ddfproj"));
@@ -169,7 +169,7 @@ void DocumentTest::commandsRefuseBadInput() {
   planning::SimulationState badState{"s", {1.0f, 2.0f}};
   QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput,
                            SetHeightsCommand(document, "x", start.part->allHeights(), badState));
-  planning::ScalarField shortField{"s", "", false, {1.0f}};
+  planning::ScalarField shortField{"s", "", false, {1.0f}, {}};
   QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput, AddFieldCommand(document, shortField));
   QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput, RemoveFieldCommand(document, 1));
   QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput, RemoveFieldCommand(document, -1));

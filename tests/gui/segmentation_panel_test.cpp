@@ -354,7 +354,7 @@ void SegmentationPanelTest::showingAFieldHidesTheRegionColours() {
   QVERIFY(colours->isChecked());
   ddfcam::planning::Project p = project();
   const std::vector<float> heights = p.part->allHeights();
-  p.fields.push_back({"height", "", true, heights});
+  p.fields.push_back({"height", "", true, heights, {}});
   f_.window->document().reset(std::move(p));
   f_.window->partView().showField("height");
   QVERIFY(!colours->isChecked());

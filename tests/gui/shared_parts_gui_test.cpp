@@ -20,6 +20,7 @@
 #include <ddfcam/io/mesh/mesh_io.h>
 #include <ddfcam/planning/analysis/region_editing.h>
 #include <ddfcam/planning/model/project.h>
+#include <ddfcam/planning/model/simulation_states.h>
 #include <ddfcam/planning/placement/tool_placement.h>
 
 #include <QAction>
@@ -285,6 +286,16 @@ void SharedPartsGuiTest::turbineBladePlaybackKeepsUp() {
   p.paths = {bladePasses(*p.part, roll, 7)};
   const int poses = static_cast<int>(p.paths[0].poses.size());
   QVERIFY2(poses > 240, qPrintable(QString::number(poses)));
+  // A design 0.1 % of the blade's size under the surface: the playback inspects against it and
+  // colours the tolerance band per raster point, as it would for a part raised by its allowance.
+  std::vector<float> design = p.part->allHeights();
+  const std::size_t per = p.part->pointsPerFace();
+  for (int f = 0; f < p.part->faceCount(); ++f) {
+    const double length = p.part->vectorAt(f, Vec3::Constant(1.0 / 3.0)).norm();
+    for (std::size_t l = f * per; l < (f + 1) * per; ++l)
+      design[l] -= static_cast<float>(1e-3 * size / length);
+  }
+  p.states.push_back({ddfcam::planning::kDesignStateName, design});
   load(p);
   auto& playback = panel<ddfcam::gui::SimulationPanel>()->playback();
   playback.setPathIndex(0);
@@ -317,11 +328,17 @@ void SharedPartsGuiTest::turbineBladePlaybackKeepsUp() {
   clock.restart();
   QVERIFY(playback.step());
   const qint64 stepMs = clock.elapsed();
-  qInfo("blade playback (%d faces, m = %d, %d poses, roll R %.3g mm, %s rendering): set 30 "
-        "poses/s: %.1f poses/s cut, %.1f frames/s rendered, %.1f ms per frame; set 100 poses/s: "
-        "%.1f poses/s cut, %.1f frames/s rendered, %.1f ms per frame; pause %lld ms, step %lld ms",
+  const auto frame = playback.latestFrame();
+  QVERIFY(!frame->toleranceClasses.empty());
+  QVERIFY(playback.liveSurface()->atlas() != nullptr);
+  qInfo("blade playback (%d faces, m = %d, %d poses, roll R %.3g mm, %s rendering, tolerance "
+        "texture %dx%d, %zu triangles within %.2g px): set 30 poses/s: %.1f poses/s cut, %.1f "
+        "frames/s rendered, %.1f ms per frame; set 100 poses/s: %.1f poses/s cut, %.1f frames/s "
+        "rendered, %.1f ms per frame; pause %lld ms, step %lld ms",
         p.part->faceCount(), p.part->resolution(), poses, roll.radiusMm,
-        view.softwareRendering() ? "software" : "hardware", at30[2], at30[0], at30[1], at100[2],
+        view.softwareRendering() ? "software" : "hardware",
+        playback.liveSurface()->atlas()->width(), playback.liveSurface()->atlas()->height(),
+        frame->triangleFace.size(), frame->viewPixelError, at30[2], at30[0], at30[1], at100[2],
         at100[0], at100[1], static_cast<long long>(pauseMs), static_cast<long long>(stepMs));
   ddfcam::test::dumpFrame(view.renderImage(), "shared_blade_playback");
   // The figures depend on the machine and its load (ctest runs two tests at once), so they are

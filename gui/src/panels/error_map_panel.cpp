@@ -8,6 +8,7 @@
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/plot_dock.h>
+#include <ddfcam/planning/model/field_freshness.h>
 #include <ddfcam/planning/simulation/workpiece.h>
 
 #include <QComboBox>
@@ -61,7 +62,8 @@ ErrorMapPanel::ErrorMapPanel(Workbench& workbench, QWidget* parent) : Panel(work
   buildOutputs();
   connect(&workbench.document, &Document::changed, this, [this](Changes what) {
     if (what & (Change::Part | Change::States | Change::Regions | Change::Paths)) refreshChoices();
-    if (what & (Change::Part | Change::Fields | Change::Regions)) updateStatistics();
+    if (what & (Change::Part | Change::Fields | Change::Regions | Change::Heights))
+      updateStatistics();
   });
   refreshChoices();
   updateStatistics();
@@ -174,6 +176,7 @@ bool ErrorMapPanel::computeErrorMap() {
       planning::ScalarField field =
           planning::deviationMap(*part, desiredHeights(*part, state, design, progress));
       field.name = kDeviationField;
+      planning::markComputedFrom(field, *part);
       return std::function<void()>([wb, self, field = std::move(field)]() mutable {
         wb->document.push(std::make_unique<AddFieldCommand>(wb->document, std::move(field)));
         wb->partView.showField(kDeviationField);

@@ -6,6 +6,7 @@
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/panels/error_map_panel.h>
 #include <ddfcam/gui/plot_dock.h>
+#include <ddfcam/planning/model/field_freshness.h>
 
 #include <QComboBox>
 #include <QHeaderView>
@@ -104,6 +105,7 @@ void ErrorMapPanel::updateStatistics() {
   clamping_.reset();
   const planning::Project& p = workbench().document.project();
   const planning::ScalarField* field = deviationField();
+  stale_ = field != nullptr && p.part && planning::isStale(*field, *p.part);
   if (field != nullptr && p.part) {
     const std::vector<int> faces = regionFaces(p, region_->currentData().toInt());
     runUserAction(workbench().reportError, tr("Error statistics"), [&] {
@@ -129,6 +131,9 @@ void ErrorMapPanel::showStatistics() {
   }
   const planning::ErrorStatistics& s = *statistics_;
   stats_->setText(
+      (stale_ ? tr("STALE: the part's heights changed after this error map was computed; "
+                   "press Compute error map again.\n")
+              : QString()) +
       tr("max %1, min %2\nmean %3, RMS %4\nin tolerance %5\nmaterial left %6, "
          "overcut %7\narea %8 mm², %9 raster points")
           .arg(mm(s.maxMm), mm(s.minMm), mm(s.meanMm), mm(s.rmsMm), percent(s.inTolerancePercent),

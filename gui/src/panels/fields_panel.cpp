@@ -13,22 +13,27 @@
 #include <ddfcam/planning/analysis/curvature.h>
 #include <ddfcam/planning/analysis/segmentation.h>
 #include <ddfcam/planning/model/builtin_fields.h>
+#include <ddfcam/planning/model/field_freshness.h>
 #include <ddfcam/planning/model/field_statistics.h>
 
 #include <QAction>
 #include <QCheckBox>
+#include <QColor>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QListWidget>
+#include <QListWidgetItem>
 #include <QMenu>
 #include <QPushButton>
 #include <QToolButton>
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <map>
 #include <memory>
+#include <optional>
 
 namespace ddfcam::gui {
 
@@ -87,6 +92,24 @@ planning::ScalarField computeField(FieldKind kind, const FieldInputs& in,
   throw InvalidInput("unknown field kind");
 }
 
+// The built-in kind that computed a field of this name (the names the planning functions give).
+std::optional<FieldKind> kindOfField(const std::string& name) {
+  static const std::map<std::string, FieldKind> kinds = {
+      {"height (h)", FieldKind::Height},
+      {"height above support", FieldKind::HeightMm},
+      {"material removed", FieldKind::MaterialRemoved},
+      {"deviation from mesh", FieldKind::Deviation},
+      {"k_max", FieldKind::KMax},
+      {"k_min", FieldKind::KMin},
+      {"mean curvature", FieldKind::MeanCurvature},
+      {"Gaussian curvature", FieldKind::GaussianCurvature},
+      {"curvature type", FieldKind::CurvatureType},
+      {"max tool radius", FieldKind::MaxToolRadius}};
+  const auto it = kinds.find(name);
+  if (it == kinds.end()) return std::nullopt;
+  return it->second;
+}
+
 QString kindTitle(FieldKind kind) {
   switch (kind) {
     case FieldKind::Height:
@@ -127,7 +150,7 @@ FieldsPanel::FieldsPanel(Workbench& workbench, QWidget* parent) : Panel(workbenc
   }
   buildControls();
   connect(&workbench.document, &Document::changed, this, [this](Changes what) {
-    if (what & (Change::Fields | Change::Part)) refreshList();
+    if (what & (Change::Fields | Change::Part | Change::Heights)) refreshList();
   });
   connect(&workbench.partView, &PartView::fieldDisplayChanged, this, [this] {
     refreshList();
@@ -160,6 +183,10 @@ QHBoxLayout* FieldsPanel::buildListButtons() {
   auto* menu = new QMenu(computeButton);
   menu->addActions(actions_);
   computeButton->setMenu(menu);
+  recompute_ = new QPushButton(tr("Recompute"), this);
+  recompute_->setObjectName("recomputeFieldButton");
+  recompute_->setToolTip(tr("Compute the selected field again from the current heights"));
+  connect(recompute_, &QPushButton::clicked, this, [this] { recomputeSelected(); });
   remove_ = new QPushButton(tr("Remove"), this);
   remove_->setObjectName("removeFieldButton");
   connect(remove_, &QPushButton::clicked, this, [this] {
@@ -170,6 +197,7 @@ QHBoxLayout* FieldsPanel::buildListButtons() {
   });
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(computeButton);
+  buttons->addWidget(recompute_);
   buttons->addWidget(remove_);
   buttons->addStretch(1);
   return buttons;
@@ -229,6 +257,7 @@ bool FieldsPanel::compute(FieldKind kind) {
     Workbench* wb = &workbench();
     started = wb->jobs.start(title, [in, kind, wb](const ProgressCallback& progress) {
       auto field = std::make_shared<planning::ScalarField>(computeField(kind, *in, progress));
+      planning::markComputedFrom(*field, in->part);
       return std::function<void()>([field, wb] {
         const std::string name = field->name;
         wb->document.push(std::make_unique<AddFieldCommand>(wb->document, std::move(*field)));
@@ -240,19 +269,48 @@ bool FieldsPanel::compute(FieldKind kind) {
   return started;
 }
 
+bool FieldsPanel::recomputeSelected() {
+  const auto& fields = workbench().document.project().fields;
+  const int row = list_->currentRow();
+  bool started = false;
+  runUserAction(workbench().reportError, tr("Recompute field"), [&] {
+    if (row < 1 || row > static_cast<int>(fields.size())) throw InvalidInput("select a field");
+    const planning::ScalarField& field = fields[static_cast<std::size_t>(row - 1)];
+    const std::optional<FieldKind> kind = kindOfField(field.name);
+    if (!kind)
+      throw InvalidInput("'" + field.name +
+                         "' is not a field of the Compute menu; compute it again where it was "
+                         "made (e.g. the Error map panel)");
+    started = compute(*kind);
+  });
+  return started;
+}
+
 void FieldsPanel::refreshList() {
   updating_ = true;
-  const auto& fields = workbench().document.project().fields;
+  const planning::Project& project = workbench().document.project();
+  const auto& fields = project.fields;
+  const std::uint64_t digest =
+      project.part ? planning::heightsDigest(project.part->allHeights()) : 0;
   list_->clear();
   list_->addItem(tr("(none: plain surface)"));
   int current = 0;
   for (std::size_t i = 0; i < fields.size(); ++i) {
     const auto& f = fields[i];
-    list_->addItem(QString::fromStdString(f.unit.empty() ? f.name : f.name + " [" + f.unit + "]"));
+    auto* item = new QListWidgetItem(
+        QString::fromStdString(f.unit.empty() ? f.name : f.name + " [" + f.unit + "]"), list_);
+    if (project.part && planning::isStale(f, digest)) {
+      item->setText(item->text() + tr("  (stale: heights changed)"));
+      item->setForeground(QColor(176, 96, 0));
+      item->setToolTip(tr("The part's heights changed after this field was computed; its "
+                          "values describe the earlier surface. Recompute it."));
+    }
     if (f.name == workbench().partView.fieldDisplay().field) current = static_cast<int>(i) + 1;
   }
   list_->setCurrentRow(current);
   remove_->setEnabled(current > 0);
+  recompute_->setEnabled(current > 0 &&
+                         kindOfField(fields[static_cast<std::size_t>(current - 1)].name));
   updating_ = false;
 }
 
@@ -261,6 +319,8 @@ void FieldsPanel::onSelectionChanged() {
   const int row = list_->currentRow();
   const auto& fields = workbench().document.project().fields;
   remove_->setEnabled(row > 0);
+  recompute_->setEnabled(row > 0 && row - 1 < static_cast<int>(fields.size()) &&
+                         kindOfField(fields[static_cast<std::size_t>(row - 1)].name));
   runUserAction(workbench().reportError, tr("Show field"), [&] {
     workbench().partView.showField(row > 0 && row - 1 < static_cast<int>(fields.size())
                                        ? fields[static_cast<std::size_t>(row - 1)].name

@@ -62,6 +62,9 @@ SimulationPlayback::SimulationPlayback(Workbench& workbench, PlaybackParams para
   timer_ = new QTimer(this);
   timer_->setInterval(params_.tickMs);
   connect(timer_, &QTimer::timeout, this, &SimulationPlayback::tick);
+  lodTimer_ = new QTimer(this);
+  lodTimer_->setInterval(params_.lodCheckMs);
+  connect(lodTimer_, &QTimer::timeout, this, [this] { updateLevelOfDetail(false); });
   connect(play_, &QPushButton::clicked, this, [this] { play(); });
   connect(pause_, &QPushButton::clicked, this, &SimulationPlayback::pause);
   connect(step_, &QPushButton::clicked, this, [this] { step(); });
@@ -200,12 +203,17 @@ bool SimulationPlayback::begin(int index) {
       if (design->heights.size() == p.part->allHeights().size()) {
         live.designHeights = design->heights;
         live.overcutToleranceMm = params_.overcutToleranceMm;
+        live.toleranceBand = {-params_.overcutToleranceMm, params_.overcutToleranceMm};
       }
     live_ = std::make_unique<planning::LiveSimulation>(*p.part, planning::toolMeshes(tool_), path,
                                                        live);
-    surface_ = std::make_unique<LiveSurfacePolyData>();
+    const bool inspected = !live.designHeights.empty();
+    surface_ = std::make_unique<LiveSurfacePolyData>(inspected ? p.part->faceCount() : 0,
+                                                     p.part->raster().steps());
     SceneGeometry scene;
     scene.surface = surface_->polyData();
+    scene.surfaceTexture = surface_->texture();
+    surface_->uploadBeforeRendering(workbench_.partView.view().renderer());
     if (const PartGeometry* shown = workbench_.partView.geometry()) {
       scene.support = shown->scene.support;  // the support and the stubbles do not change
       scene.stubbles = shown->scene.stubbles;
@@ -215,6 +223,8 @@ bool SimulationPlayback::begin(int index) {
     timeline_->setRange(0, static_cast<int>(path.poses.size()));
     shownSerial_ = 0;
     frameTimesMs_.clear();
+    updateLevelOfDetail(true);
+    lodTimer_->start();
     showLatest();
   });
 }
@@ -293,6 +303,7 @@ void SimulationPlayback::finishIfDone() {
 bool SimulationPlayback::apply() {
   if (!isActive()) return false;
   timer_->stop();
+  lodTimer_->stop();
   live_->pause();
   if (live_->simulation().nextPose() == 0) return false;
   // Take the simulation first: the push's change signal must find no playback to cancel.
@@ -321,6 +332,7 @@ bool SimulationPlayback::apply() {
 
 void SimulationPlayback::cancel() {
   timer_->stop();
+  lodTimer_->stop();
   if (!live_) return;
   live_.reset();
   surface_.reset();

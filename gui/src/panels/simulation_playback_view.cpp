@@ -40,6 +40,13 @@ void listEvents(QListWidget* list, const Events& events) {
   }
 }
 
+// The level of detail in force: triangles and the pixel error they keep.
+QString detailText(const planning::LiveFrame& frame) {
+  const QString triangles = QObject::tr("; %1 triangles").arg(frame.triangleFace.size());
+  if (frame.viewPixelError <= 0.0) return triangles;
+  return triangles + QObject::tr(" within %1 px").arg(frame.viewPixelError, 0, 'g', 2);
+}
+
 }  // namespace
 
 double SimulationPlayback::framesPerSecond() const {
@@ -114,7 +121,8 @@ void SimulationPlayback::showStatus(const planning::LiveFrame& frame) {
   status_->setText(text);
   if (!live_->isPlaying()) {
     rates_->setText(tr("Paused; display update %1 ms").arg(1e3 * frame.displayUpdateSeconds, 0,
-                                                          'f', 1));
+                                                          'f', 1) +
+                    detailText(frame));
     return;
   }
   const QString requested = posesPerSecond_ > 0.0 ? tr("%1 poses/s").arg(posesPerSecond_)
@@ -124,7 +132,8 @@ void SimulationPlayback::showStatus(const planning::LiveFrame& frame) {
                       .arg(frame.simulatedPosesPerSecond, 0, 'f', 1)
                       .arg(requested)
                       .arg(framesPerSecond(), 0, 'f', 1)
-                      .arg(1e3 * frame.displayUpdateSeconds, 0, 'f', 1));
+                      .arg(1e3 * frame.displayUpdateSeconds, 0, 'f', 1) +
+                  detailText(frame));
 }
 
 void SimulationPlayback::showOvercut(const planning::LiveFrame& frame) {
@@ -141,6 +150,11 @@ void SimulationPlayback::showOvercut(const planning::LiveFrame& frame) {
                           .arg(frame.overcutPoses)
                           .arg(params_.overcutToleranceMm));
   }
+  if (surface_ && surface_->texture() && frame.inspected)
+    overcut_->setText(overcut_->text() +
+                      tr("\nColours per raster point against the design: blue stock left "
+                         "(above +%1 mm), green within ±%1 mm, red overcut (below -%1 mm)")
+                          .arg(params_.overcutToleranceMm));
 }
 
 void SimulationPlayback::updateControls() {

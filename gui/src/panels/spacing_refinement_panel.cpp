@@ -10,6 +10,7 @@
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/part_scene.h>
 #include <ddfcam/gui/part_view.h>
+#include <ddfcam/planning/model/field_freshness.h>
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -159,8 +160,10 @@ bool SpacingRefinementPanel::refine() {
       run.progress = scaled(progress, 0.2, 1.0);
       auto result = std::make_shared<const planning::SpacingRefinementResult>(
           planning::refineSpacing(*part, fields->field, choice.faceMask, tool, run));
-      return std::function<void()>([self, result, toolIndex, tol = params.toleranceMm] {
+      const std::uint64_t digest = planning::heightsDigest(part->allHeights());
+      return std::function<void()>([self, result, toolIndex, tol = params.toleranceMm, digest] {
         self->result_ = result;
+        self->resultHeightsDigest_ = digest;
         self->resultTool_ = toolIndex;
         self->resultToleranceMm_ = tol;
         self->showResult();
@@ -177,7 +180,8 @@ bool SpacingRefinementPanel::apply() {
     Document& document = workbench().document;
     planning::ToolPath path = result_->toolPath;
     path.tool = resultTool_;
-    planning::ScalarField error{kErrorField, "mm", true, result_->errorField};
+    planning::ScalarField error{kErrorField, "mm", true, result_->errorField, {}};
+    error.heightsDigest = resultHeightsDigest_;
     std::vector<std::unique_ptr<DocumentCommand>> parts;
     parts.push_back(std::make_unique<AddPathCommand>(document, std::move(path)));
     parts.push_back(std::make_unique<AddFieldCommand>(document, std::move(error)));

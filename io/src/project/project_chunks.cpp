@@ -189,6 +189,21 @@ planning::ScalarField readField(PayloadReader& in) {
   return field;
 }
 
+void putFieldDigest(std::string& out, int fieldIndex, std::uint64_t digest) {
+  putI32(out, fieldIndex);
+  putU64(out, digest);
+}
+
+void readFieldDigest(PayloadReader& in, std::vector<planning::ScalarField>& fields) {
+  const std::int32_t index = in.i32("field index");
+  if (index < 0 || static_cast<std::size_t>(index) >= fields.size())
+    in.fail("heights digest of field " + std::to_string(index) + ", but " +
+            std::to_string(fields.size()) + " fields come before it");
+  planning::ScalarField& field = fields[static_cast<std::size_t>(index)];
+  if (field.heightsDigest) in.fail("a second heights digest of field '" + field.name + "'");
+  field.heightsDigest = in.u64("heights digest");
+}
+
 void putPlan(std::string& out, const planning::RegionPlan& plan) {
   putI32(out, plan.tool);
   putI32(out, static_cast<int>(plan.flowSource));

@@ -22,6 +22,8 @@ inline constexpr std::string_view kTagTool = "TOOL";
 inline constexpr std::string_view kTagPath = "PATH";
 inline constexpr std::string_view kTagState = "STAT";
 inline constexpr std::string_view kTagSurface = "SURF";
+/// Optional: the heights digest of one field (planning::ScalarField::heightsDigest), after it.
+inline constexpr std::string_view kTagFieldDigest = "hdig";
 
 /// @brief Whether @p tag names an optional chunk: its first character is a lower-case ASCII
 /// letter (see project_file.h). A reader skips optional chunks it does not know.
@@ -70,6 +72,8 @@ class PayloadReader {
 void putProjectInfo(std::string& out, const planning::Project& project);
 void putDesignMesh(std::string& out, const ddf::TriangleMesh& mesh);
 void putField(std::string& out, const planning::ScalarField& field);
+/// @brief i32 index of the field in the project, u64 digest.
+void putFieldDigest(std::string& out, int fieldIndex, std::uint64_t digest);
 void putRegion(std::string& out, const planning::Region& region);
 void putTool(std::string& out, const planning::Tool& tool);
 void putPath(std::string& out, const planning::ToolPath& path);
@@ -89,6 +93,8 @@ void putFloatList(std::string& out, const std::vector<float>& values);
 void readProjectInfo(PayloadReader& in, planning::Project& project);
 ddf::TriangleMesh readDesignMesh(PayloadReader& in);
 planning::ScalarField readField(PayloadReader& in);
+/// @brief Sets the digest of the field it names among @p fields (read before it).
+void readFieldDigest(PayloadReader& in, std::vector<planning::ScalarField>& fields);
 /// @param formatVersion version of the file: 1 (no plan, the default plan is used) or 2.
 planning::Region readRegion(PayloadReader& in, std::uint32_t formatVersion);
 /// @param formatVersion version of the file: before 3 a tool ends after its segments and the

@@ -100,6 +100,8 @@ class ProjectDecoder {
       surface.name = in.string("surface name");
       surface.ddf = decodeEmbeddedDdf(in.rest(), in, "surface '" + surface.name + "'");
       project_.surfaces.push_back(std::move(surface));
+    } else if (tag == detail::kTagFieldDigest) {
+      detail::readFieldDigest(in, project_.fields);
     } else if (detail::isOptionalChunkTag(tag)) {
       skip(in);
     } else {
@@ -146,6 +148,10 @@ std::string encodeProject(const planning::Project& project) {
                            project.paths[i]);
   for (const planning::ScalarField& field : project.fields)
     detail::putField(encoder.beginChunk(detail::kTagField), field);
+  for (std::size_t i = 0; i < project.fields.size(); ++i)
+    if (const auto& digest = project.fields[i].heightsDigest)
+      detail::putFieldDigest(encoder.beginChunk(detail::kTagFieldDigest), static_cast<int>(i),
+                             *digest);
   for (const planning::Region& region : project.regions)
     detail::putRegion(encoder.beginChunk(detail::kTagRegion), region);
   for (const planning::SimulationState& state : project.states)

@@ -216,13 +216,13 @@ CurvatureField computeCurvature(const ddf::DisplacementField& ddf, const Curvatu
 ScalarField curvatureScalarField(const CurvatureField& field, CurvatureQuantity quantity) {
   switch (quantity) {
     case CurvatureQuantity::KMax:
-      return {"k_max", "1/mm", true, field.kMax};
+      return {"k_max", "1/mm", true, field.kMax, {}};
     case CurvatureQuantity::KMin:
-      return {"k_min", "1/mm", true, field.kMin};
+      return {"k_min", "1/mm", true, field.kMin, {}};
     case CurvatureQuantity::Mean:
-      return {"mean curvature", "1/mm", true, field.mean};
+      return {"mean curvature", "1/mm", true, field.mean, {}};
     case CurvatureQuantity::Gaussian:
-      return {"Gaussian curvature", "1/mm^2", true, field.gaussian};
+      return {"Gaussian curvature", "1/mm^2", true, field.gaussian, {}};
   }
   throw InvalidInput("curvatureScalarField: unknown quantity " +
                      std::to_string(static_cast<int>(quantity)));

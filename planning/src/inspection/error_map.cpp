@@ -132,7 +132,7 @@ ScalarField deviationMap(const ddf::DisplacementField& produced,
   detail::checkFieldSize(produced, desiredHeights.size(), "deviationMap: desired heights");
   const std::vector<Vec3> normals =
       orientedUnitNormals(produced, surfacePoints(produced, desiredHeights));
-  ScalarField field{"deviation", "mm", true, std::vector<float>(desiredHeights.size())};
+  ScalarField field{"deviation", "mm", true, std::vector<float>(desiredHeights.size()), {}};
   const std::vector<float>& heights = produced.allHeights();
   const int n = produced.raster().steps();
   tbb::parallel_for(tbb::blocked_range<int>(0, produced.faceCount()), [&](const auto& range) {

@@ -92,7 +92,8 @@ void fillDeviations(const ddf::DisplacementField& flat, const std::vector<Vec3>&
   const std::vector<Vec3> normals = rasterPointNormals(flat);
   const double sign = flipNormal ? -1.0 : 1.0;
   const int n = flat.raster().steps();
-  out.deviation = ScalarField{"deviation", "mm", true, std::vector<float>(deformedPoints.size())};
+  out.deviation =
+      ScalarField{"deviation", "mm", true, std::vector<float>(deformedPoints.size()), {}};
   out.deviationVectors.assign(deformedPoints.size(), Vec3::Constant(kNaN));
   tbb::parallel_for(tbb::blocked_range<int>(0, flat.faceCount()), [&](const auto& range) {
     for (int f = range.begin(); f != range.end(); ++f) {
@@ -214,7 +215,7 @@ ComparisonCoverage comparisonCoverage(const SurfaceComparison& comparison) {
 ScalarField crossingRegionField(const SurfaceComparison& comparison) {
   const ddf::DisplacementField& ddf = comparison.sequence.stages.at(0).ddf;
   ScalarField out{"unique projection fails", "", false,
-                  std::vector<float>(ddf.allHeights().size(), 0.0f)};
+                  std::vector<float>(ddf.allHeights().size(), 0.0f), {}};
   const auto mark = [&](const std::vector<int>& faces, float value) {
     for (int f : faces) {
       auto begin = out.values.begin() + static_cast<std::ptrdiff_t>(f * ddf.pointsPerFace());

@@ -69,12 +69,12 @@ void forFacesWithProgress(int faces, const ProgressCallback& progress, Fn&& fn) 
 }  // namespace
 
 ScalarField heightField(const ddf::DisplacementField& ddf) {
-  return {"height (h)", "", true, ddf.allHeights()};
+  return {"height (h)", "", true, ddf.allHeights(), {}};
 }
 
 ScalarField heightMmField(const ddf::DisplacementField& ddf) {
   const std::vector<double> lengths = vectorLengths(ddf);
-  ScalarField out{"height above support", "mm", true, std::vector<float>(lengths.size())};
+  ScalarField out{"height above support", "mm", true, std::vector<float>(lengths.size()), {}};
   for (std::size_t l = 0; l < lengths.size(); ++l)
     out.values[l] = static_cast<float>(ddf.allHeights()[l] * lengths[l]);
   return out;
@@ -87,7 +87,7 @@ ScalarField materialRemovedField(const ddf::DisplacementField& ddf,
                        " reference heights, expected " + std::to_string(ddf.allHeights().size()));
   }
   const std::vector<double> lengths = vectorLengths(ddf);
-  ScalarField out{"material removed", "mm", false, std::vector<float>(lengths.size())};
+  ScalarField out{"material removed", "mm", false, std::vector<float>(lengths.size()), {}};
   for (std::size_t l = 0; l < lengths.size(); ++l) {
     const double removed = static_cast<double>(referenceHeights[l]) - ddf.allHeights()[l];
     out.values[l] = static_cast<float>(removed * lengths[l]);
@@ -100,7 +100,8 @@ ScalarField deviationField(const ddf::DisplacementField& ddf, const ddf::Triangl
   if (reference.triangles.empty())
     throw InvalidInput("deviationField: the reference mesh has no triangles");
   const MeshDistance distance(reference);
-  ScalarField out{"deviation from mesh", "mm", true, std::vector<float>(ddf.allHeights().size())};
+  ScalarField out{"deviation from mesh", "mm", true,
+                  std::vector<float>(ddf.allHeights().size()), {}};
   forFacesWithProgress(ddf.faceCount(), progress, [&](int f) {
     float* values = out.values.data() + static_cast<std::size_t>(f) * ddf.pointsPerFace();
     forRasterPoints(ddf.raster(), [&](int i, int k, std::size_t l) {

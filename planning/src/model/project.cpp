@@ -213,7 +213,7 @@ bool samePath(const ToolPath& a, const ToolPath& b) {
 
 bool sameField(const ScalarField& a, const ScalarField& b) {
   return a.name == b.name && a.unit == b.unit && a.isSigned == b.isSigned &&
-         sameBits(a.values, b.values);
+         sameBits(a.values, b.values) && a.heightsDigest == b.heightsDigest;
 }
 
 bool sameStroke(const std::vector<ddf::Vec3>& a, const std::vector<ddf::Vec3>& b) {

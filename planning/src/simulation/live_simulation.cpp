@@ -38,6 +38,7 @@ struct LiveSimulation::State {
   LiveSimulationParams params;
   std::unique_ptr<ddf::IncrementalTriangulation> display;
   std::optional<CutInspection> inspection;
+  std::optional<LiveToleranceMap> tolerance;
   std::thread worker;
   std::atomic<bool> stop{false}, playing{false};
   std::atomic<double> posesPerSecond{30.0};
@@ -50,6 +51,10 @@ struct LiveSimulation::State {
   Clock::time_point playStart;
   std::deque<Clock::time_point> recentPoses;  // poses cut in the last second
   double lastUpdateSeconds = 0.0;
+  std::mutex viewMutex;
+  std::optional<ddf::ViewBoundsParams> pendingView;  // set by the viewer, taken by publish()
+  std::optional<ddf::ViewBoundsParams> view;         // in force
+  double budgetFactor = 1.0;                         // pixel error multiplier for the budget
 
   State(ddf::DisplacementField workpiece, const ToolMeshes& tool, const ToolPath& path,
         const LiveSimulationParams& p)
@@ -64,6 +69,8 @@ struct LiveSimulation::State {
                            std::to_string(p.designHeights.size()) + " heights, the part " +
                            std::to_string(design.allHeights().size()));
       design.allHeights() = p.designHeights;
+      tolerance.emplace(design, p.toleranceBand);
+      tolerance->updateAll(simulation.workpiece());
       inspection.emplace(std::move(design), p.overcutToleranceMm);
     }
   }
@@ -91,6 +98,8 @@ struct LiveSimulation::State {
   }
 
   void publish();
+  bool applyView();
+  void copyTriangles(LiveFrame& out) const;
   void run();
   void join() {
     stop = true;
@@ -99,15 +108,64 @@ struct LiveSimulation::State {
   }
 };
 
+// Takes a new view, or coarsens the current one while the mesh exceeds the triangle budget;
+// true if the bounds were set again (the budget is then checked once more).
+bool LiveSimulation::State::applyView() {
+  bool dirty = false;
+  {
+    const std::lock_guard lock(viewMutex);
+    if (pendingView) {
+      view = std::exchange(pendingView, std::nullopt);
+      budgetFactor = 1.0;
+      dirty = true;
+    }
+  }
+  if (!view) return false;
+  if (!dirty && display->triangleCount() > params.triangleBudget && budgetFactor < 16.0) {
+    budgetFactor *= 2.0;
+    dirty = true;
+  }
+  if (!dirty) return false;
+  ddf::ViewBoundsParams bounds = *view;
+  bounds.pixelError *= budgetFactor;
+  bounds.minEpsMm = params.displayEpsMm;
+  bounds.maxEpsMm = params.displayEpsMm * std::max(1.0, params.coarsestEpsFactor);
+  display->setFaceEps(ddf::viewDependentBounds(simulation.workpiece(), bounds));
+  return true;
+}
+
+void LiveSimulation::State::copyTriangles(LiveFrame& out) const {
+  const int faces = simulation.workpiece().faceCount();
+  out.triangles.reserve(3 * display->triangleCount());
+  out.triangleFace.reserve(display->triangleCount());
+  if (tolerance) out.cornerParams.reserve(6 * display->triangleCount());
+  for (int f = 0; f < faces; ++f) {
+    for (const auto& t : display->faceTriangles(f)) {
+      out.triangles.insert(out.triangles.end(), t.begin(), t.end());
+      out.triangleFace.push_back(f);
+    }
+    if (!tolerance) continue;
+    for (const ddf::TriangleParams& corners : display->faceTriangleParams(f))
+      for (const auto& ik : corners) out.cornerParams.insert(out.cornerParams.end(), ik.begin(),
+                                                             ik.end());
+  }
+  if (tolerance) out.toleranceClasses = tolerance->classes();
+}
+
 void LiveSimulation::State::publish() {
   const auto start = Clock::now();
   const std::vector<int> changed = simulation.takeChangedFaces();
   if (!changed.empty()) display->update(changed);
+  if (tolerance) tolerance->update(simulation.workpiece(), changed);
+  while (applyView()) {
+  }
   lastUpdateSeconds = secondsBetween(start, Clock::now());
   auto out = std::make_shared<LiveFrame>();
   out->serial = ++serial;
   out->posesCut = simulation.nextPose();
   out->totalPoses = static_cast<int>(simulation.path().poses.size());
+  out->faceCount = simulation.workpiece().faceCount();
+  out->rasterSteps = simulation.workpiece().raster().steps();
   out->report = simulation.report();
   const auto& vertices = display->vertices();
   const auto& normals = display->normals();
@@ -118,16 +176,11 @@ void LiveSimulation::State::publish() {
       out->positions[3 * v + c] = static_cast<float>(vertices[v][c]);
       out->normals[3 * v + c] = static_cast<float>(normals[v][c]);
     }
-  const int faces = simulation.workpiece().faceCount();
-  out->triangles.reserve(3 * display->triangleCount());
-  out->triangleFace.reserve(display->triangleCount());
-  for (int f = 0; f < faces; ++f)
-    for (const auto& t : display->faceTriangles(f)) {
-      out->triangles.insert(out->triangles.end(), t.begin(), t.end());
-      out->triangleFace.push_back(f);
-    }
+  copyTriangles(*out);
   out->simulatedPosesPerSecond = poseRate();
   out->displayUpdateSeconds = lastUpdateSeconds;
+  out->viewPixelError = view ? view->pixelError * budgetFactor : 0.0;
+  if (view) out->faceEps = display->faceEps();
   out->elapsedSeconds = playingSeconds();
   if (inspection) {
     inspection->follow(simulation);
@@ -225,6 +278,19 @@ void LiveSimulation::seek(int pose) {
   pause();
   state_->simulation.seek(pose);
   state_->publish();
+}
+
+void LiveSimulation::setView(const ddf::ViewBoundsParams& view) {
+  State& s = *state_;
+  ddf::ViewBoundsParams checked = view;
+  checked.minEpsMm = s.params.displayEpsMm;
+  checked.maxEpsMm = s.params.displayEpsMm * std::max(1.0, s.params.coarsestEpsFactor);
+  ddf::validateViewBounds(checked);
+  {
+    const std::lock_guard lock(s.viewMutex);
+    s.pendingView = view;
+  }
+  if (!s.playing) s.publish();
 }
 
 void LiveSimulation::setPosesPerSecond(double posesPerSecond) {

@@ -9,6 +9,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <filesystem>
@@ -75,6 +76,7 @@ void expectSameProject(const planning::Project& a, const planning::Project& b) {
     EXPECT_EQ(a.fields[i].unit, b.fields[i].unit);
     EXPECT_EQ(a.fields[i].isSigned, b.fields[i].isSigned);
     EXPECT_TRUE(sameVector(a.fields[i].values, b.fields[i].values)) << "field " << i;
+    EXPECT_EQ(a.fields[i].heightsDigest, b.fields[i].heightsDigest) << "field " << i;
   }
   ASSERT_EQ(a.regions.size(), b.regions.size());
   for (std::size_t i = 0; i < a.regions.size(); ++i) {
@@ -181,6 +183,52 @@ TEST(ProjectFile, ChunksFollowTheDocumentedTable) {
   const std::size_t matrixAt = 4 + path.name.size() + 4 + 8 + 8;
   EXPECT_TRUE(
       sameBits(chunks[5].second.data() + matrixAt, path.poses[0].pose.matrix().data(), 128));
+}
+
+// A field's heights digest travels in an optional "hdig" chunk after the fields: i32 index,
+// u64 digest; fields without one write nothing, so their projects are saved as before.
+TEST(ProjectFile, HeightsDigestsOfFieldsRoundTripInOptionalChunks) {
+  planning::Project project = test::makeRichProject();
+  const std::string before = encodeProject(project);
+  const std::uint64_t digest = 0x0123456789abcdefULL;
+  project.fields[1].heightsDigest = digest;
+  const std::string bytes = encodeProject(project);
+  const auto chunks = chunksOf(bytes);
+  std::vector<std::string> tags;
+  for (const auto& chunk : chunks) tags.push_back(chunk.first);
+  const auto at = std::find(tags.begin(), tags.end(), "hdig");
+  ASSERT_NE(at, tags.end());
+  EXPECT_EQ(*(at - 1), "FELD");
+  EXPECT_EQ(std::count(tags.begin(), tags.end(), "hdig"), 1);
+  std::string expected;
+  for (int i = 0; i < 4; ++i) expected += static_cast<char>(i == 0 ? 1 : 0);
+  for (int i = 0; i < 8; ++i) expected += static_cast<char>((digest >> (8 * i)) & 0xFF);
+  EXPECT_EQ(chunks[static_cast<std::size_t>(at - tags.begin())].second, expected);
+  const planning::Project back = decodeProject(bytes, "digest.ddfproj");
+  EXPECT_FALSE(back.fields[0].heightsDigest.has_value());
+  EXPECT_EQ(back.fields[1].heightsDigest, digest);
+  EXPECT_EQ(encodeProject(back), bytes);
+  EXPECT_NE(before, bytes);
+}
+
+TEST(ProjectFile, ADigestOfAFieldThatDoesNotPrecedeItIsRejected) {
+  planning::Project project = test::makeRichProject();
+  project.fields[0].heightsDigest = 5;
+  std::string bytes = encodeProject(project);
+  // Point the digest at field 7 (the project has two) and fix the checksum the way the file
+  // layout documents it (CRC-32 of everything before the last 4 bytes).
+  const std::size_t at = bytes.find("hdig");
+  ASSERT_NE(at, std::string::npos);
+  bytes[at + 12] = 7;
+  bytes.resize(bytes.size() - 4);
+  const std::uint32_t crc = crc32(std::as_bytes(std::span(bytes.data(), bytes.size())));
+  for (int i = 0; i < 4; ++i) bytes += static_cast<char>((crc >> (8 * i)) & 0xFF);
+  try {
+    (void)decodeProject(bytes, "bad.ddfproj");
+    FAIL() << "accepted a digest of a missing field";
+  } catch (const IoError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("heights digest of field 7"));
+  }
 }
 
 TEST(ProjectFile, RegionPayloadsFollowTheDocumentedLayout) {

@@ -49,7 +49,7 @@ inline planning::Project makeSmallProject() {
   params.size = {2.0, 1.0};
   project.part = ddf::planePatch(params).ddf;
   const std::size_t values = project.part->allHeights().size();
-  project.fields.push_back({"height", "mm", true, std::vector<float>(values, 0.5f)});
+  project.fields.push_back({"height", "mm", true, std::vector<float>(values, 0.5f), {}});
   project.tools.push_back(planning::Tool{});
   planning::ToolPath path;
   path.name = "p";
@@ -147,8 +147,8 @@ inline planning::Project makeRichProject() {
   const std::size_t values = h.size();
   project.part = std::move(part);  // h dangles from here on
 
-  planning::ScalarField signedField{"height \u0394", "mm", true, {}};
-  planning::ScalarField removed{"material removed", "mm\u00b3", false, {}};
+  planning::ScalarField signedField{"height \u0394", "mm", true, {}, {}};
+  planning::ScalarField removed{"material removed", "mm\u00b3", false, {}, {}};
   for (std::size_t i = 0; i < values; ++i) {
     signedField.values.push_back(i % 7 == 3 ? std::numeric_limits<float>::quiet_NaN()
                                             : -0.01f * static_cast<float>(i));

@@ -58,7 +58,8 @@ TEST(ScallopPrediction, MeasuredScallopIsAreaQuantile) {
   ddf::PlanePatchParams params;
   params.m = 9;
   const ddf::DisplacementField plane = ddf::planePatch(params).ddf;
-  ScalarField map{"deviation", "mm", true, std::vector<float>(plane.allHeights().size(), 0.0f)};
+  ScalarField map{"deviation", "mm", true,
+                  std::vector<float>(plane.allHeights().size(), 0.0f), {}};
   map.values[5] = 0.3f;  // a single spike
   EXPECT_NEAR(measuredScallopMm(map, plane), 0.3, 1e-7);
   EXPECT_EQ(measuredScallopMm(map, plane, {}, {0.99}), 0.0);

@@ -30,7 +30,7 @@ Project smallProject() {
   const std::size_t n = p.part->allHeights().size();
   p.designMesh =
       ddf::TriangleMesh{{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}}, {{0, 1, 2}}};
-  p.fields = {ScalarField{"height", "mm", true, std::vector<float>(n, 0.5f)}};
+  p.fields = {ScalarField{"height", "mm", true, std::vector<float>(n, 0.5f), {}}};
   p.regions = {Region{"left", {0, 2, 5}, {0.9f, 0.6f, 0.2f}, {}}};
   RegionPlan& plan = p.regions[0].plan;
   plan.tool = 1;

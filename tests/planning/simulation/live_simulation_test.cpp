@@ -62,13 +62,16 @@ std::vector<float> freshHeights(int poses, const ToolPath& path) {
   return work.allHeights();
 }
 
-// The frame's triangles per face equal a fresh triangulation of @p heights, corner by corner.
+// The frame's triangles per face equal a fresh triangulation of @p heights, corner by corner
+// (with per-face bounds @p faceEps if given).
 ::testing::AssertionResult frameIsFreshMesh(const LiveFrame& frame,
-                                            const std::vector<float>& heights) {
+                                            const std::vector<float>& heights,
+                                            const std::vector<float>& faceEps = {}) {
   ddf::DisplacementField field = stock();
   field.allHeights() = heights;
   ddf::AdaptiveTriangulationParams params;
   params.epsMm = kEps;
+  params.faceEpsMm = faceEps;
   const ddf::AdaptiveTriangulation fresh = ddf::triangulateAdaptiveWithStats(field, params);
   if (fresh.mesh.triangles.size() * 3 != frame.triangles.size())
     return ::testing::AssertionFailure() << frame.triangles.size() / 3 << " triangles, fresh "
@@ -147,6 +150,42 @@ TEST(LiveSimulation, NeverCutsFasterThanTheSetRate) {
   EXPECT_GE(live.simulation().nextPose(), 1);
   EXPECT_THROW(LiveSimulation(stock(), ball(), path, liveParams(0.0)).seek(-1),
                InvalidInput);
+}
+
+// A view-dependent level of detail: from far away the display is coarser, and it is exactly
+// the fresh triangulation with the bounds the view gives; over the triangle budget the pixel
+// error is raised.
+TEST(LiveSimulation, AViewSetsTheLevelOfDetailWithinTheTriangleBudget) {
+  const ToolPath path = groovePath(20);
+  LiveSimulation live(stock(), ball(), path, liveParams(0.0));
+  live.seek(12);
+  const std::size_t uniform = live.latestFrame()->triangleFace.size();
+  ddf::ViewBoundsParams view;
+  view.eyeMm = Vec3(10.0, 5.0, 400.0);  // 400 mm above the 20 x 10 mm patch
+  view.direction = -Vec3::UnitZ();
+  view.viewAngleDeg = 30.0;
+  view.viewportHeightPx = 600;
+  view.pixelError = 0.5;
+  live.setView(view);
+  auto frame = live.latestFrame();
+  EXPECT_DOUBLE_EQ(frame->viewPixelError, 0.5);
+  EXPECT_LT(frame->triangleFace.size(), uniform);
+  ddf::ViewBoundsParams bounds = view;
+  bounds.minEpsMm = kEps;
+  bounds.maxEpsMm = kEps * 128.0;
+  const std::vector<float> faceEps = ddf::viewDependentBounds(live.simulation().workpiece(), bounds);
+  EXPECT_TRUE(frameIsFreshMesh(*frame, freshHeights(12, path), faceEps));
+  // Cutting on under the view keeps its bounds.
+  live.seek(20);
+  EXPECT_TRUE(frameIsFreshMesh(*live.latestFrame(), freshHeights(20, path), faceEps));
+  // A budget below the coarsest mesh: the pixel error is raised to its limit of 16 times.
+  LiveSimulationParams tight = liveParams(0.0);
+  tight.triangleBudget = 10;
+  LiveSimulation budget(stock(), ball(), path, tight);
+  budget.setView(view);
+  EXPECT_DOUBLE_EQ(budget.latestFrame()->viewPixelError, 8.0);
+  view.viewportHeightPx = 0;
+  EXPECT_THROW(live.setView(view), InvalidInput);
 }
 
 TEST(LiveSimulation, RejectsANonPositiveDisplayBound) {

@@ -7,6 +7,7 @@
 #include <ddfcam/progress.h>
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 namespace ddfcam::ddf {
@@ -20,6 +21,11 @@ struct AdaptiveTriangulationParams {
   /// exactly two triangles on a closed DDF (one on a support boundary). Without it the mesh is
   /// crack-free but a long edge may face several short ones (fig. 7.1b). Default true.
   bool removeTVertices = true;
+  /// Error bound per support face, mm (each > 0), instead of epsMm everywhere: e.g. coarser
+  /// where the view sees a face small (a view-dependent level of detail). A support edge is
+  /// held to the smaller bound of its two faces, so the mesh stays crack-free and without
+  /// T-vertices; each face's raster points lie within its own bound. Default empty (epsMm).
+  std::vector<float> faceEpsMm;
   /// Progress in [0, 1] and cancellation, called from the calling thread. Default none.
   ProgressCallback progress;
 };
@@ -68,6 +74,10 @@ TriangleMesh triangulateAdaptive(const DisplacementField& ddf,
 /// @throws InvalidInput if params.epsMm is not positive; Cancelled if params.progress asks.
 AdaptiveTriangulation triangulateAdaptiveWithStats(const DisplacementField& ddf,
                                                    const AdaptiveTriangulationParams& params = {});
+
+/// @brief Checks per-face error bounds: empty, or one finite positive bound per face.
+/// @throws InvalidInput naming the first bad one.
+void checkFaceEps(const DisplacementField& ddf, std::span<const float> faceEpsMm);
 
 /// @brief Number of triangles triangulateAdaptive() produces at error bound @p epsMm (mm).
 /// @throws InvalidInput if epsMm is not positive.

@@ -13,6 +13,10 @@
 
 namespace ddfcam::ddf {
 
+/// @brief Parameter positions (i, k) of a triangle's three corners on its support face, in
+/// raster steps (raster point (i, k) of Raster at integers; fractions between them), float.
+using TriangleParams = std::array<std::array<float, 2>, 3>;
+
 /// @brief What one IncrementalTriangulation::update() did.
 struct TriangulationUpdate {
   /// Faces subdivided again: the changed ones and every face sharing a support vertex with one
@@ -32,8 +36,8 @@ struct TriangulationUpdate {
 /// kept per support face, so that after a cut only the faces it reached are subdivided again
 /// (the incremental display of a live simulation).
 ///
-/// The result after any sequence of update() calls equals a fresh triangulateAdaptive() of the
-/// current heights: per face the same triangles with bitwise the same corner positions, in the
+/// The result after any sequence of update() and setFaceEps() calls equals a fresh
+/// triangulateAdaptive() of the current heights with the current bounds: per face the same triangles with bitwise the same corner positions, in the
 /// same order (the subdivision of a face depends only on its own raster and its canonical
 /// border points, and the points on a support edge only on that edge), hence crack-free and
 /// without T-vertices. Vertices live in slots: a border vertex has one slot for all faces that
@@ -55,8 +59,18 @@ class IncrementalTriangulation {
   /// and its neighbours must not have changed.
   TriangulationUpdate update(std::span<const int> changedFaces);
 
-  /// @brief The error bound, mm.
+  /// @brief Sets an error bound per support face (mm, each > 0; see
+  /// AdaptiveTriangulationParams::faceEpsMm), e.g. from the view (a level of detail that
+  /// follows the camera). Faces whose bound changed and their edge neighbours (whose shared
+  /// edges may now be held to another bound) are subdivided again; afterwards the result
+  /// equals a fresh build with these bounds. The heights must not have changed since the last
+  /// update(). @throws InvalidInput as checkFaceEps.
+  TriangulationUpdate setFaceEps(std::span<const float> epsMm);
+
+  /// @brief The error bound given at construction, mm.
   double epsMm() const;
+  /// @brief The error bound of every face, mm (all epsMm() until setFaceEps()).
+  const std::vector<float>& faceEps() const;
   /// @brief Vertex slots, mm, part frame; a slot no triangle refers to is free (stale).
   const std::vector<Vec3>& vertices() const;
   /// @brief Unit area-weighted vertex normal per slot (oriented like the support faces; zero
@@ -64,6 +78,11 @@ class IncrementalTriangulation {
   const std::vector<Vec3>& normals() const;
   /// @brief Triangles of support face @p face as slot triples, oriented like the face.
   const std::vector<std::array<int, 3>>& faceTriangles(int face) const;
+  /// @brief Per triangle of faceTriangles(@p face), where its corners lie on the face's raster:
+  /// the lattice position of a subdivision vertex, the mean of its leaf's corners for a centroid
+  /// (where the centroid's position is the mean of theirs). A display maps raster-resolution
+  /// values (one per raster point of the face, e.g. a texture) through these.
+  const std::vector<TriangleParams>& faceTriangleParams(int face) const;
   /// @brief Number of triangles over all faces.
   std::size_t triangleCount() const;
   /// @brief The mesh with its slots compacted (first use in face order), the face of every

@@ -9,7 +9,8 @@
 
 #include <QPointF>
 
-#include <vtkPolyData.h>  // complete type: SceneGeometry is copied and destroyed by value
+#include <vtkPolyData.h>  // complete types: SceneGeometry is copied and destroyed by value
+#include <vtkTexture.h>
 #include <vtkSmartPointer.h>
 #include <vtkType.h>
 
@@ -41,6 +42,9 @@ struct SceneGeometry {
   vtkSmartPointer<vtkPolyData> surface;   ///< triangles with point normals
   vtkSmartPointer<vtkPolyData> support;   ///< line cells
   vtkSmartPointer<vtkPolyData> stubbles;  ///< line cells
+  /// Colours of the surface at raster resolution through its point texture coordinates (e.g.
+  /// the live tolerance band); null: the plain surface colour or a field.
+  vtkSmartPointer<vtkTexture> surfaceTexture;
 };
 
 /// @brief How a scalar field is shown on the surface.
@@ -52,6 +56,9 @@ struct FieldStyle {
   /// Error-map colouring instead of map: green inside the band, blue above, red below
   /// (makeToleranceLookupTable); nullopt = use map (default).
   std::optional<planning::ToleranceBand> band{};
+  /// The values describe other heights than the surface's (planning::isStale): the title is
+  /// drawn in orange (default false).
+  bool stale = false;
 };
 
 /// @brief Look of one overlay.
@@ -91,7 +98,8 @@ class PartScene {
   PartScene& operator=(const PartScene&) = delete;
 
   /// @brief Replaces the geometry of every layer (null members show nothing) and clears the
-  /// surface field (its values belonged to the old surface). Overlays are kept.
+  /// surface field (its values belonged to the old surface); a surface texture is shown on a white
+  /// material (its own colours, lit), none restores the surface colour. Overlays are kept.
   void setGeometry(const SceneGeometry& geometry);
   /// @brief Shows or hides @p layer.
   void setVisible(Layer layer, bool visible);

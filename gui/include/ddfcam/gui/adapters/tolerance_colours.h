@@ -21,6 +21,11 @@ namespace ddfcam::gui {
 std::array<double, 3> toleranceColourAt(double valueMm, double loMm, double hiMm,
                                         const planning::ToleranceBand& band);
 
+/// @brief One colour per class, for displays that show classes only (the live tolerance band):
+/// the band's green, and the middle shades of the material-left blue and the overcut red.
+/// toleranceClassOfColour() of each gives its class back.
+std::array<double, 3> toleranceClassColour(planning::ToleranceClass toleranceClass);
+
 /// @brief Which class a colour of toleranceColourAt() stands for, by its dominant channel
 /// (green, blue or red), for tests and pickers reading colours back from the view.
 planning::ToleranceClass toleranceClassOfColour(const std::array<double, 3>& rgb);

@@ -56,6 +56,8 @@ class ErrorMapPanel : public Panel {
   bool computeErrorMap();
   /// @brief Statistics of the shown error map over the chosen region, if there is one.
   const std::optional<planning::ErrorStatistics>& statistics() const { return statistics_; }
+  /// @brief True if the shown error map was computed from heights the part no longer has.
+  bool isStale() const { return stale_; }
   /// @brief Share of the chosen region with a deviation, beside statistics().
   const std::optional<planning::Coverage>& coverage() const { return coverage_; }
   /// @brief Points of the region at the crust bottom with an overcut, beside statistics().
@@ -97,6 +99,7 @@ class ErrorMapPanel : public Panel {
   QLabel* stats_ = nullptr;
   QTableWidget* scallopTable_ = nullptr;
   std::optional<planning::ErrorStatistics> statistics_;
+  bool stale_ = false;  // the shown map was computed from other heights than the part's
   std::optional<planning::Coverage> coverage_;
   std::optional<planning::CrustClamping> clamping_;
   std::vector<planning::ScallopRow> scallopRows_;

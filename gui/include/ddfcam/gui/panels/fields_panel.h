@@ -46,6 +46,10 @@ class FieldsPanel : public Panel {
 
   /// @brief Starts computing @p kind as a job (the Compute menu). @return true if started.
   bool compute(FieldKind kind);
+  /// @brief Computes the selected field again from the current heights (it must be one of the
+  /// Compute menu's); fields computed from other heights are listed as stale. @return true if
+  /// the job started.
+  bool recomputeSelected();
   /// @brief Number of bins of the histogram. Default 64.
   static constexpr int kHistogramBins = 64;
 
@@ -63,6 +67,7 @@ class FieldsPanel : public Panel {
   QList<QAction*> actions_;
   QListWidget* list_ = nullptr;
   QPushButton* remove_ = nullptr;
+  QPushButton* recompute_ = nullptr;
   QComboBox* colourMap_ = nullptr;
   QCheckBox* autoRange_ = nullptr;
   QDoubleSpinBox* min_ = nullptr;

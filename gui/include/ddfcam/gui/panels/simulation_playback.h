@@ -13,6 +13,7 @@
 #include <QString>
 #include <QWidget>
 
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -42,6 +43,11 @@ struct PlaybackParams {
   /// Overcut against the project's "design" state up to this depth is within tolerance, mm.
   /// Default 0.01.
   double overcutToleranceMm = 0.01;
+  /// Largest error of the live surface on the screen, pixels (a view-dependent level of
+  /// detail, ddf::viewDependentBounds; never finer than displayEpsFraction). Default 0.5.
+  double lodPixelError = 0.5;
+  /// Interval at which the view's camera is checked for the level of detail, ms. Default 200.
+  int lodCheckMs = 200;
 };
 
 /// @brief Controls and state of a playback in the Simulation panel. begin() copies the part
@@ -103,6 +109,12 @@ class SimulationPlayback : public QWidget {
   const planning::GrindingSimulation* simulation() const;
   /// @brief Poses cut in the frame shown, -1 without a playback.
   int posesCut() const;
+  /// @brief The newest frame of the active playback, or null.
+  std::shared_ptr<const planning::LiveFrame> latestFrame() const {
+    return live_ ? live_->latestFrame() : nullptr;
+  }
+  /// @brief The surface shown while a playback is active (with its tolerance texture), or null.
+  const LiveSurfacePolyData* liveSurface() const { return live_ ? surface_.get() : nullptr; }
   /// @brief Index of the pose the tool is drawn at (last cut pose; 0 before the first cut),
   /// -1 without a playback.
   int shownPose() const;
@@ -125,6 +137,8 @@ class SimulationPlayback : public QWidget {
   void restoreDocumentSurface();
   bool checkWorker();
   void finishIfDone();
+  /// Hands the camera to the live simulation when it moved (or @p force): the level of detail.
+  void updateLevelOfDetail(bool force);
 
   Workbench& workbench_;
   PlaybackParams params_;
@@ -141,6 +155,8 @@ class SimulationPlayback : public QWidget {
   QElapsedTimer clock_;
   bool committing_ = false;
   QTimer* timer_ = nullptr;
+  QTimer* lodTimer_ = nullptr;
+  std::array<double, 9> lodView_{};  ///< camera and viewport of the last level of detail
   QPushButton* play_ = nullptr;
   QPushButton* pause_ = nullptr;
   QPushButton* step_ = nullptr;

@@ -6,6 +6,7 @@
 #include <ddfcam/planning/flow/flow_field_source.h>
 #include <ddfcam/planning/lines/spacing_refinement.h>
 
+#include <cstdint>
 #include <memory>
 
 class QComboBox;
@@ -76,6 +77,7 @@ class SpacingRefinementPanel : public Panel {
   std::shared_ptr<const planning::SpacingRefinementResult> result_;
   int resultTool_ = 0;
   double resultToleranceMm_ = 0.0;
+  std::uint64_t resultHeightsDigest_ = 0;  // heights the result was computed on
 };
 
 }  // namespace ddfcam::gui

@@ -2,6 +2,8 @@
 // ddfcam: a scalar value per raster point of a DDF (fields, error maps, deviations).
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +17,10 @@ struct ScalarField {
   std::string unit;           ///< e.g. "mm", "1/mm"; empty for dimensionless
   bool isSigned = false;      ///< values of both signs are meaningful (use a diverging map)
   std::vector<float> values;  ///< F * pointsPerFace values
+  /// Digest of the part heights the values were computed from (planning::markComputedFrom);
+  /// when the part's heights differ the field is stale (planning::isStale). Empty for a
+  /// field that does not depend on the heights or whose origin is unknown (never stale).
+  std::optional<std::uint64_t> heightsDigest;
 
   bool operator==(const ScalarField&) const = default;
 };
