@@ -55,7 +55,9 @@ struct IncrementalTriangulation::State {
   detail::AdaptiveContext ctx;
   std::vector<FaceResult> results;
   std::vector<std::vector<std::array<int, 3>>> triangles;      // per face, slots
-  std::vector<std::vector<TriangleParams>> params;             // per face, per triangle
+  // Per face, per triangle; computed on demand (faceTriangleParams), stale after a rebuild.
+  mutable std::vector<std::vector<TriangleParams>> params;
+  mutable std::vector<std::uint8_t> paramsStale;
   std::vector<std::vector<int>> centroidSlots;                 // per face
   std::vector<std::vector<std::pair<int, Vec3>>> normalParts;  // per face, sorted by slot
   std::vector<Vec3> vertices, normals;
@@ -191,7 +193,7 @@ void IncrementalTriangulation::State::reassemble(const std::vector<int>& faces) 
   }
   tbb::parallel_for(std::size_t{0}, faces.size(), [&](std::size_t at) {
     const int f = faces[at];
-    detail::cornerParams(*ddf, ctx.scale, f, results[f], slotKey, params[f]);
+    paramsStale[f] = 1;  // computed when asked for: only a textured display needs them
     std::vector<std::pair<int, Vec3>> parts;
     for (const auto& t : triangles[f]) {
       const Vec3 n = (vertices[t[1]] - vertices[t[0]]).cross(vertices[t[2]] - vertices[t[0]]);
@@ -284,6 +286,7 @@ IncrementalTriangulation::IncrementalTriangulation(const DisplacementField& ddf,
   s.results.resize(faces);
   s.triangles.resize(faces);
   s.params.resize(faces);
+  s.paramsStale.assign(static_cast<std::size_t>(faces), 1);
   s.centroidSlots.resize(faces);
   s.normalParts.resize(faces);
   s.edgeLists.resize(ddf.support().n_edges());
@@ -362,7 +365,13 @@ const std::vector<std::array<int, 3>>& IncrementalTriangulation::faceTriangles(i
 }
 
 const std::vector<TriangleParams>& IncrementalTriangulation::faceTriangleParams(int face) const {
-  return state_->params.at(static_cast<std::size_t>(face));
+  const State& s = *state_;
+  const auto f = static_cast<std::size_t>(face);
+  if (s.paramsStale.at(f)) {
+    detail::cornerParams(*s.ddf, s.ctx.scale, face, s.results[f], s.slotKey, s.params[f]);
+    s.paramsStale[f] = 0;
+  }
+  return s.params[f];
 }
 
 std::size_t IncrementalTriangulation::triangleCount() const {

@@ -226,6 +226,12 @@ QPointF VtkView::widgetPosition(const Eigen::Vector3d& world) const {
   return {display[0] / dpr, (height - display[1]) / dpr};
 }
 
+void VtkView::setMotionRendering(bool moving) {
+  if (!softwareRendering_) return;
+  renderer_->SetUseFXAA(!moving);
+  requestRender();
+}
+
 void VtkView::initializeGL() {
   if (contextDestroyed_) QObject::disconnect(contextDestroyed_);
   // A reparented widget gets a new context; VTK's objects of the old one must go first.

@@ -222,6 +222,7 @@ bool SimulationPlayback::begin(int index) {
     const QSignalBlocker block(timeline_);
     timeline_->setRange(0, static_cast<int>(path.poses.size()));
     shownSerial_ = 0;
+    shownCollisions_ = static_cast<std::size_t>(-1);
     frameTimesMs_.clear();
     updateLevelOfDetail(true);
     lodTimer_->start();
@@ -234,6 +235,7 @@ bool SimulationPlayback::play() {
   live_->setPosesPerSecond(posesPerSecond_);
   if (!live_->play()) return false;
   frameTimesMs_.clear();
+  workbench_.partView.view().setMotionRendering(true);
   timer_->start();
   updateControls();
   return true;
@@ -241,6 +243,7 @@ bool SimulationPlayback::play() {
 
 void SimulationPlayback::pause() {
   timer_->stop();
+  workbench_.partView.view().setMotionRendering(false);
   if (!isActive()) return;
   live_->pause();
   if (checkWorker()) showLatest();
@@ -279,6 +282,7 @@ void SimulationPlayback::tick() {
   showLatest();
   if (!live_->isPlaying()) {
     timer_->stop();
+    workbench_.partView.view().setMotionRendering(false);
     showLatest();  // the worker's final frame
     finishIfDone();
     updateControls();
@@ -304,6 +308,7 @@ bool SimulationPlayback::apply() {
   if (!isActive()) return false;
   timer_->stop();
   lodTimer_->stop();
+  workbench_.partView.view().setMotionRendering(false);
   live_->pause();
   if (live_->simulation().nextPose() == 0) return false;
   // Take the simulation first: the push's change signal must find no playback to cancel.
@@ -333,6 +338,7 @@ bool SimulationPlayback::apply() {
 void SimulationPlayback::cancel() {
   timer_->stop();
   lodTimer_->stop();
+  workbench_.partView.view().setMotionRendering(false);
   if (!live_) return;
   live_.reset();
   surface_.reset();

@@ -72,10 +72,14 @@ void SimulationPlayback::showFrame(const planning::LiveFrame& frame) {
   if (pose < static_cast<int>(path.poses.size()))
     showToolOverlay(scene, tool_, path.poses[static_cast<std::size_t>(pose)].pose,
                     isColliding(frame.report, pose));
-  std::vector<Eigen::Vector3d> marks;
-  for (const planning::CollisionHit& hit : frame.report.collisions)
-    marks.push_back(path.poses[static_cast<std::size_t>(hit.pose)].contact);
-  showCollisionMarkers(scene, marks);
+  // Markers and lists change only with new events: rebuilt then, not every frame.
+  if (frame.report.collisions.size() != shownCollisions_) {
+    std::vector<Eigen::Vector3d> marks;
+    for (const planning::CollisionHit& hit : frame.report.collisions)
+      marks.push_back(path.poses[static_cast<std::size_t>(hit.pose)].contact);
+    showCollisionMarkers(scene, marks);
+    shownCollisions_ = frame.report.collisions.size();
+  }
   showReport(frame.report);
   {
     const QSignalBlocker block(timeline_);
@@ -95,12 +99,18 @@ void SimulationPlayback::showFrame(const planning::LiveFrame& frame) {
 void SimulationPlayback::showReport(const planning::GrindingReport& report) {
   listEvents(collisions_, report.collisions);
   listEvents(vConvexity_, report.vConvexity);
-  removal_->clear();
-  for (std::size_t i = 0; i < report.passes.size(); ++i)
-    removal_->addItem(tr("pass %1: %2 mm³ (%3 poses)")
-                          .arg(i + 1)
-                          .arg(report.passes[i].removedVolumeMm3, 0, 'f', 4)
-                          .arg(report.passes[i].poseCount));
+  while (removal_->count() > static_cast<int>(report.passes.size()))
+    delete removal_->takeItem(removal_->count() - 1);
+  for (std::size_t i = 0; i < report.passes.size(); ++i) {
+    const QString text = tr("pass %1: %2 mm³ (%3 poses)")
+                             .arg(i + 1)
+                             .arg(report.passes[i].removedVolumeMm3, 0, 'f', 4)
+                             .arg(report.passes[i].poseCount);
+    if (static_cast<int>(i) < removal_->count())
+      removal_->item(static_cast<int>(i))->setText(text);  // in place: no relayout of the list
+    else
+      removal_->addItem(text);
+  }
   collisionLabel_->setText(tr("Collisions: %1 poses; V-convexity violations: %2 poses")
                                .arg(report.collisions.size())
                                .arg(report.vConvexity.size()));

@@ -22,8 +22,8 @@ struct BladeFrames {
   std::shared_ptr<const planning::LiveFrame> a, b;
 };
 
-std::optional<BladeFrames> bladeFrames() {
-  std::optional<BladeWorkload> w = bladeWorkload();
+std::optional<BladeFrames> bladeFrames(int resolution) {
+  std::optional<BladeWorkload> w = bladeWorkload(resolution);
   if (!w) return std::nullopt;
   planning::ToolPath path;
   path.name = "blade";
@@ -47,8 +47,8 @@ std::optional<BladeFrames> bladeFrames() {
   return out;
 }
 
-void applyFrames(benchmark::State& state, bool textured) {
-  static const std::optional<BladeFrames> frames = bladeFrames();
+void applyFrames(benchmark::State& state, const std::optional<BladeFrames>& frames,
+                 bool textured) {
   if (!frames) {
     state.SkipWithError("turbine-blade-jigsaw.stl not found under DDFCAM_SHARED_DATA_DIR");
     return;
@@ -71,14 +71,33 @@ void applyFrames(benchmark::State& state, bool textured) {
   }
 }
 
+const std::optional<BladeFrames>& blade() {
+  static const std::optional<BladeFrames> frames = bladeFrames(kBladeResolution);
+  return frames;
+}
+
+// m = 20: 13,306 x 231 = 3.07 million raster points (as BM_LiveDisplay_Blade3M).
+const std::optional<BladeFrames>& blade3M() {
+  static const std::optional<BladeFrames> frames = bladeFrames(20);
+  return frames;
+}
+
 void BM_LiveSurfaceApply_Blade(benchmark::State& state) {
-  applyFrames(state, false);
+  applyFrames(state, blade(), false);
 }
 void BM_LiveSurfaceApply_BladeTolerance(benchmark::State& state) {
-  applyFrames(state, true);
+  applyFrames(state, blade(), true);
+}
+void BM_LiveSurfaceApply_Blade3M(benchmark::State& state) {
+  applyFrames(state, blade3M(), false);
+}
+void BM_LiveSurfaceApply_Blade3MTolerance(benchmark::State& state) {
+  applyFrames(state, blade3M(), true);
 }
 BENCHMARK(BM_LiveSurfaceApply_Blade)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LiveSurfaceApply_BladeTolerance)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LiveSurfaceApply_Blade3M)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LiveSurfaceApply_Blade3MTolerance)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace ddfcam::bench

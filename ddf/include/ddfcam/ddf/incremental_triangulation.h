@@ -81,7 +81,9 @@ class IncrementalTriangulation {
   /// @brief Per triangle of faceTriangles(@p face), where its corners lie on the face's raster:
   /// the lattice position of a subdivision vertex, the mean of its leaf's corners for a centroid
   /// (where the centroid's position is the mean of theirs). A display maps raster-resolution
-  /// values (one per raster point of the face, e.g. a texture) through these.
+  /// values (one per raster point of the face, e.g. a texture) through these. Computed on first
+  /// request after the face was rebuilt (so displays without raster colours pay nothing); not
+  /// to be called concurrently with itself or an update.
   const std::vector<TriangleParams>& faceTriangleParams(int face) const;
   /// @brief Number of triangles over all faces.
   std::size_t triangleCount() const;

@@ -76,6 +76,10 @@ class VtkView : public QOpenGLWidget {
   double renderSeconds() const { return renderSeconds_; }
   /// @brief True when the GL context is a software rasterizer (then FXAA replaces 4x MSAA).
   bool softwareRendering() const { return softwareRendering_; }
+  /// @brief While @p moving (a live simulation playing), a software rasterizer skips FXAA: at
+  /// 30 or more frames per second the edges alias unnoticed and the pass costs a third of a
+  /// frame; back to smooth edges when it stops. No effect with hardware rendering (MSAA).
+  void setMotionRendering(bool moving);
   /// @brief Renders a frame now and returns it (device pixels, opaque).
   QImage renderImage();
   /// @brief Renders one frame offscreen at exactly @p devicePixels (e.g. 1920 x 1080 for a

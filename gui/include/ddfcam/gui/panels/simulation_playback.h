@@ -32,7 +32,7 @@ namespace ddfcam::gui {
 struct PlaybackParams {
   /// Interval at which the view looks for a newer frame of the simulation, ms (default 15):
   /// shorter than frameIntervalMs, so no published frame waits long.
-  int tickMs = 15;
+  int tickMs = 5;
   /// Shortest time between two frames the simulation publishes while playing, ms: the display
   /// rate (default 25, 40 frames per second) whatever the simulation's rate.
   int frameIntervalMs = 25;
@@ -151,6 +151,7 @@ class SimulationPlayback : public QWidget {
   double posesPerSecond_ = 30.0;
   std::uint64_t shownSerial_ = 0;
   int shownPosesCut_ = -1;
+  std::size_t shownCollisions_ = static_cast<std::size_t>(-1);  ///< markers drawn for these
   std::deque<std::int64_t> frameTimesMs_;  ///< when frames were shown, last second
   QElapsedTimer clock_;
   bool committing_ = false;
