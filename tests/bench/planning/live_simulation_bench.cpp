@@ -6,6 +6,7 @@
 
 #include <ddfcam/ddf/incremental_triangulation.h>
 #include <ddfcam/planning/simulation/grinding_simulation.h>
+#include <ddfcam/planning/simulation/live_simulation.h>
 #include <ddfcam/planning/tools/tool_shapes.h>
 
 #include <benchmark/benchmark.h>
@@ -38,21 +39,29 @@ planning::ToolMeshes rollWithFlanges(const BladeWorkload& w) {
   return tool;
 }
 
-void simulateBlade(benchmark::State& state, Variant variant) {
+// The blade workload (loaded once, heights reset) and its poses as a path; null (and the
+// benchmark skipped) without the shared file.
+BladeWorkload* bladeAndPath(benchmark::State& state, planning::ToolPath& path) {
   static std::optional<BladeWorkload> w = bladeWorkload();
   if (!w) {
     state.SkipWithError("turbine-blade-jigsaw.stl not found under DDFCAM_SHARED_DATA_DIR");
-    return;
+    return nullptr;
   }
-  planning::ToolPath path;
   path.name = "blade";
   for (const auto& pose : w->poses) path.poses.push_back({pose, pose.translation()});
+  w->ddf.allHeights() = w->initialHeights;
+  return &*w;
+}
+
+void simulateBlade(benchmark::State& state, Variant variant) {
+  planning::ToolPath path;
+  BladeWorkload* w = bladeAndPath(state, path);
+  if (!w) return;
   planning::GrindingSimulationParams params;
   params.checkVConvexity = variant != kCutOnly;
   params.checkCollisions = variant == kAllChecks || variant == kAllChecksAndDisplay;
   params.recordUndo = true;  // as the workbench's playback runs it
   const planning::ToolMeshes tool = rollWithFlanges(*w);
-  w->ddf.allHeights() = w->initialHeights;
   std::size_t collisions = 0, violations = 0;
   for (auto _ : state) {
     state.PauseTiming();
@@ -78,6 +87,48 @@ void simulateBlade(benchmark::State& state, Variant variant) {
   state.counters["collision_poses"] = static_cast<double>(collisions);
   state.counters["vconvexity_poses"] = static_cast<double>(violations);
 }
+
+// The worker's whole share per pose as the workbench runs it: LiveSimulation::step() cuts a
+// pose with every check, updates the incremental display and publishes a frame (the whole mesh
+// copied out); with a design also the overcut inspection, the tolerance classes of the changed
+// faces and the corner parameters of the textured display.
+void stepBlade(benchmark::State& state, bool inspected) {
+  planning::ToolPath path;
+  BladeWorkload* w = bladeAndPath(state, path);
+  if (!w) return;
+  planning::LiveSimulationParams params;
+  params.simulation.checkVConvexity = true;
+  params.simulation.checkCollisions = true;
+  params.displayEpsMm = 1e-4 * w->size;
+  params.posesPerSecond = 0.0;
+  if (inspected) {
+    params.designHeights = w->initialHeights;
+    const double drop = 1e-3 * w->size / w->ddf.vector(0).norm();
+    for (float& h : params.designHeights) h -= static_cast<float>(drop);
+    params.overcutToleranceMm = params.displayEpsMm;
+    params.toleranceBand = {-params.displayEpsMm, params.displayEpsMm};
+  }
+  const planning::ToolMeshes tool = rollWithFlanges(*w);
+  for (auto _ : state) {
+    state.PauseTiming();
+    planning::LiveSimulation live(w->ddf, tool, path, params);
+    state.ResumeTiming();
+    while (live.step()) {
+    }
+  }
+  const double poses = static_cast<double>(path.poses.size());
+  state.counters["ms_per_pose"] = benchmark::Counter(
+      poses * 1e-3, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void BM_LiveSimulation_BladeStep(benchmark::State& state) {
+  stepBlade(state, false);
+}
+void BM_LiveSimulation_BladeStepInspected(benchmark::State& state) {
+  stepBlade(state, true);
+}
+BENCHMARK(BM_LiveSimulation_BladeStep)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LiveSimulation_BladeStepInspected)->Unit(benchmark::kMillisecond);
 
 void BM_LiveSimulation_BladeCutOnly(benchmark::State& state) {
   simulateBlade(state, kCutOnly);
