@@ -94,6 +94,7 @@ set(DDFCAM_SLOW_TESTS
   ddfcam_segmentation_panel_tests
   ddfcam_shared_parts_gui_tests
   ddfcam_simulation_options_tests
+  ddfcam_simulation_inspection_tests
   ddfcam_simulation_playback_tests
   ddfcam_spacing_refinement_panel_tests
   ddfcam_stale_fields_tests

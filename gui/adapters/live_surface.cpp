@@ -91,8 +91,8 @@ void LiveSurfacePolyData::applyTextured(const planning::LiveFrame& frame) {
   auto* positions = vtkFloatArray::SafeDownCast(data_->GetPoints()->GetData());
   auto* normals = vtkFloatArray::SafeDownCast(data_->GetPointData()->GetNormals());
   auto* tcoords = vtkFloatArray::SafeDownCast(data_->GetPointData()->GetTCoords());
-  for (vtkFloatArray* a : {positions, normals}) a->SetNumberOfTuples(static_cast<vtkIdType>(corners));
-  tcoords->SetNumberOfTuples(static_cast<vtkIdType>(corners));
+  for (vtkFloatArray* a : {positions, normals, tcoords})
+    a->SetNumberOfTuples(static_cast<vtkIdType>(corners));
   float* p = positions->GetPointer(0);
   float* n = normals->GetPointer(0);
   float* t = tcoords->GetPointer(0);

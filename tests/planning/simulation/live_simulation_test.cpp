@@ -173,7 +173,8 @@ TEST(LiveSimulation, AViewSetsTheLevelOfDetailWithinTheTriangleBudget) {
   ddf::ViewBoundsParams bounds = view;
   bounds.minEpsMm = kEps;
   bounds.maxEpsMm = kEps * 128.0;
-  const std::vector<float> faceEps = ddf::viewDependentBounds(live.simulation().workpiece(), bounds);
+  const std::vector<float> faceEps =
+      ddf::viewDependentBounds(live.simulation().workpiece(), bounds);
   EXPECT_TRUE(frameIsFreshMesh(*frame, freshHeights(12, path), faceEps));
   // Cutting on under the view keeps its bounds.
   live.seek(20);

@@ -37,8 +37,8 @@ struct TriangulationUpdate {
 /// (the incremental display of a live simulation).
 ///
 /// The result after any sequence of update() and setFaceEps() calls equals a fresh
-/// triangulateAdaptive() of the current heights with the current bounds: per face the same triangles with bitwise the same corner positions, in the
-/// same order (the subdivision of a face depends only on its own raster and its canonical
+/// triangulateAdaptive() of the current heights with the current bounds: per face the same
+/// triangles with bitwise the same corner positions, in the same order (the subdivision of a face depends only on its own raster and its canonical
 /// border points, and the points on a support edge only on that edge), hence crack-free and
 /// without T-vertices. Vertices live in slots: a border vertex has one slot for all faces that
 /// share it, freed slots are reused, so slot numbers differ from the fresh build's indices.

@@ -14,8 +14,8 @@ class vtkTexture;
 
 namespace ddfcam::gui {
 
-/// @brief A texture atlas with one opaque RGBA texel per raster point: support face f's triangular raster
-/// (steps + 1 points per edge) occupies square block (f mod columns, f div columns) of
+/// @brief A texture atlas with one opaque RGBA texel per raster point: support face f's
+/// triangular raster (steps + 1 points per edge) occupies square block (f mod columns, f div columns) of
 /// (steps + 1)^2 texels, raster point (i, k) at texel (i, k) of its block; texels outside the
 /// triangle (i + k > steps) repeat (steps - k, k). Sampled nearest with texel centres on the
 /// raster points, so a fragment at parameter position (u, w) shows raster point (round(u),

@@ -70,7 +70,10 @@ struct ProjectReadReport {
 /// |---|---|---|
 /// | "prov" | 0..1 | where the part came from, below |
 /// | "line" | per planned path | the raw lines and linking of a path, below |
-/// | "hdig" | per field with a digest | i32 field index (among the "FELD" chunks before it), u64 heights digest (planning::ScalarField::heightsDigest) |
+/// | "hdig" | per field with a digest | i32 field index (a "FELD" before it), u64 digest |
+///
+/// "hdig": the digest is planning::ScalarField::heightsDigest, the heights the field was
+/// computed from; a field without it is never reported stale.
 ///
 /// "prov": i32 source unit (0 mm, 1 cm, 2 m, 3 in), u64 N, N strings (the CAD face names),
 /// u64 F, F i32 (per support face of the part its CAD face, -1 or < N; F is 0 or the part's
