@@ -146,7 +146,7 @@ void RasterTextureAtlas::uploadChanged() {
   }
   // The image's MTime stays, so VTK keeps its texture; the changed blocks go up one by one
   // (a cut changes a few hundred faces of ten thousands: a whole upload costs far more).
-  object->Bind();
+  object->Activate();  // a texture unit of VTK's, released again below
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, width_);
   const auto* data = static_cast<const unsigned char*>(image_->GetScalarPointer());
@@ -157,6 +157,7 @@ void RasterTextureAtlas::uploadChanged() {
     dirty_[static_cast<std::size_t>(f)] = 0;
   }
   glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  object->Deactivate();
   dirtyFaces_.clear();
 }
 
