@@ -33,6 +33,10 @@ float quantised(double raw, const ViewBoundsParams& v) {
 
 std::vector<float> viewDependentBounds(const DisplacementField& ddf, const ViewBoundsParams& view) {
   validateViewBounds(view);
+  if (view.parallel)  // a pixel is the same size at every depth
+    return std::vector<float>(
+        static_cast<std::size_t>(ddf.faceCount()),
+        quantised(view.pixelError * 2.0 * view.parallelScaleMm / view.viewportHeightPx, view));
   const Vec3 dir = view.direction.normalized();
   const double tanHalf = std::tan(0.5 * view.viewAngleDeg * std::numbers::pi / 180.0);
   const int n = ddf.raster().steps();
@@ -45,11 +49,6 @@ std::vector<float> viewDependentBounds(const DisplacementField& ddf, const ViewB
     for (const Vec3& c : corners) radius = std::max(radius, (c - centre).norm());
     if (!std::isfinite(radius)) {
       out[f] = static_cast<float>(view.minEpsMm);
-      continue;
-    }
-    if (view.parallel) {
-      out[f] = quantised(view.pixelError * 2.0 * view.parallelScaleMm / view.viewportHeightPx,
-                         view);
       continue;
     }
     const Vec3 toCentre = centre - view.eyeMm;

@@ -99,6 +99,9 @@ struct LiveSimulation::State {
 
   void publish();
   bool applyView();
+  // The view's bounds as the display takes them: the budget's pixel error, displayEpsMm up to
+  // coarsestEpsFactor times it.
+  ddf::ViewBoundsParams bounds(const ddf::ViewBoundsParams& camera) const;
   void copyTriangles(LiveFrame& out) const;
   void run();
   void join() {
@@ -126,12 +129,16 @@ bool LiveSimulation::State::applyView() {
     dirty = true;
   }
   if (!dirty) return false;
-  ddf::ViewBoundsParams bounds = *view;
-  bounds.pixelError *= budgetFactor;
-  bounds.minEpsMm = params.displayEpsMm;
-  bounds.maxEpsMm = params.displayEpsMm * std::max(1.0, params.coarsestEpsFactor);
-  display->setFaceEps(ddf::viewDependentBounds(simulation.workpiece(), bounds));
+  display->setFaceEps(ddf::viewDependentBounds(simulation.workpiece(), bounds(*view)));
   return true;
+}
+
+ddf::ViewBoundsParams LiveSimulation::State::bounds(const ddf::ViewBoundsParams& camera) const {
+  ddf::ViewBoundsParams out = camera;
+  out.pixelError *= budgetFactor;
+  out.minEpsMm = params.displayEpsMm;
+  out.maxEpsMm = params.displayEpsMm * std::max(1.0, params.coarsestEpsFactor);
+  return out;
 }
 
 void LiveSimulation::State::copyTriangles(LiveFrame& out) const {
@@ -282,10 +289,7 @@ void LiveSimulation::seek(int pose) {
 
 void LiveSimulation::setView(const ddf::ViewBoundsParams& view) {
   State& s = *state_;
-  ddf::ViewBoundsParams checked = view;
-  checked.minEpsMm = s.params.displayEpsMm;
-  checked.maxEpsMm = s.params.displayEpsMm * std::max(1.0, s.params.coarsestEpsFactor);
-  ddf::validateViewBounds(checked);
+  ddf::validateViewBounds(s.bounds(view));
   {
     const std::lock_guard lock(s.viewMutex);
     s.pendingView = view;
