@@ -201,6 +201,7 @@ vtkSmartPointer<vtkLookupTable> makeLookupTable(ColourMap map, double lo, double
   table->SetAboveRangeColor(above[0], above[1], above[2], 1.0);
   table->UseBelowRangeColorOn();
   table->UseAboveRangeColorOn();
+  table->SetNanColor(kNoValueRgb[0], kNoValueRgb[1], kNoValueRgb[2], 1.0);
   table->SetNumberOfTableValues(colours);
   for (int i = 0; i < colours; ++i) {
     const auto c = colourAt(map, static_cast<double>(i) / (colours - 1));

@@ -88,8 +88,8 @@ std::array<float, 2> RasterTextureAtlas::texCoord(int face, float u, float w) co
           (static_cast<float>(by * block_) + w + 0.5f) / static_cast<float>(height_)};
 }
 
-void RasterTextureAtlas::writeFace(int face, const std::uint8_t* classes) {
-  static const std::array<Rgb8, 4> colours = classColours();
+template <typename Colour>
+void RasterTextureAtlas::writeFace(int face, Colour colourOfPoint) {
   auto* data = static_cast<unsigned char*>(image_->GetScalarPointer());
   const int x0 = (face % columns_) * block_, y0 = (face / columns_) * block_;
   // Raster order: k rows, i along each; row k holds steps - k + 1 points.
@@ -97,27 +97,45 @@ void RasterTextureAtlas::writeFace(int face, const std::uint8_t* classes) {
   for (int k = 0; k <= steps_; ++k) {
     const int inRow = steps_ - k + 1;
     unsigned char* row = data + (static_cast<std::size_t>(y0 + k) * width_ + x0) * 4;
-    for (int i = 0; i < block_; ++i) {
-      const std::uint8_t c = classes[rowStart + static_cast<std::size_t>(std::min(i, inRow - 1))];
-      const Rgb8& rgb = colours[std::min<std::uint8_t>(c, 3)];
-      std::memcpy(row + 4 * i, rgb.data(), 4);
-    }
+    for (int i = 0; i < block_; ++i)
+      std::memcpy(row + 4 * i, colourOfPoint(rowStart + static_cast<std::size_t>(std::min(i, inRow - 1))), 4);
     rowStart += static_cast<std::size_t>(inRow);
   }
 }
 
+void RasterTextureAtlas::checkSize(std::size_t points, const char* caller) const {
+  const std::size_t expected = pointsPerFace_ * static_cast<std::size_t>(faces_);
+  if (points != expected)
+    throw InvalidInput(std::string("RasterTextureAtlas::") + caller + ": " +
+                       std::to_string(points) + " raster points, expected " +
+                       std::to_string(expected));
+}
+
+void RasterTextureAtlas::setColours(std::span<const std::uint8_t> rgba) {
+  if (rgba.size() % 4 != 0)
+    throw InvalidInput("RasterTextureAtlas::setColours: " + std::to_string(rgba.size()) +
+                       " bytes are not whole RGBA colours");
+  checkSize(rgba.size() / 4, "setColours");
+  for (int f = 0; f < faces_; ++f) {
+    const std::uint8_t* block = rgba.data() + 4 * pointsPerFace_ * static_cast<std::size_t>(f);
+    writeFace(f, [block](std::size_t p) { return block + 4 * p; });
+  }
+  shown_.clear();  // a later setClasses() writes every face again
+  lastRewritten_ = faces_;
+  wholeImageChanged();
+}
+
 void RasterTextureAtlas::setClasses(const std::vector<std::uint8_t>& classes) {
-  if (classes.size() != pointsPerFace_ * static_cast<std::size_t>(faces_))
-    throw InvalidInput("RasterTextureAtlas::setClasses: " + std::to_string(classes.size()) +
-                       " values, expected " +
-                       std::to_string(pointsPerFace_ * static_cast<std::size_t>(faces_)));
+  checkSize(classes.size(), "setClasses");
+  static const std::array<Rgb8, 4> colours = classColours();
   const bool first = shown_.empty();
   lastRewritten_ = 0;
   for (int f = 0; f < faces_; ++f) {
     const std::size_t at = pointsPerFace_ * static_cast<std::size_t>(f);
     if (!first && std::memcmp(classes.data() + at, shown_.data() + at, pointsPerFace_) == 0)
       continue;
-    writeFace(f, classes.data() + at);
+    const std::uint8_t* block = classes.data() + at;
+    writeFace(f, [block](std::size_t p) { return colours[std::min<std::uint8_t>(block[p], 3)].data(); });
     ++lastRewritten_;
     if (!first && !dirty_[static_cast<std::size_t>(f)]) {
       dirty_[static_cast<std::size_t>(f)] = 1;

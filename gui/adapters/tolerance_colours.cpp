@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // ddfcam gui adapters: tolerance-band colours of error maps.
 #include <ddfcam/error.h>
+#include <ddfcam/gui/adapters/colour_map.h>
 #include <ddfcam/gui/adapters/tolerance_colours.h>
 
 #include <vtkLookupTable.h>
@@ -87,6 +88,7 @@ vtkSmartPointer<vtkLookupTable> makeToleranceLookupTable(double loMm, double hiM
   table->SetAboveRangeColor(kLeftDark[0], kLeftDark[1], kLeftDark[2], 1.0);
   table->UseBelowRangeColorOn();
   table->UseAboveRangeColorOn();
+  table->SetNanColor(kNoValueRgb[0], kNoValueRgb[1], kNoValueRgb[2], 1.0);
   table->SetNumberOfTableValues(colours);
   const double cell = (hiMm - loMm) / colours;
   for (int i = 0; i < colours; ++i) {

@@ -3,14 +3,18 @@
 #include <ddfcam/gui/part_geometry.h>
 
 #include <ddfcam/ddf/adaptive_triangulation.h>
+#include <ddfcam/ddf/incremental_triangulation.h>
 #include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/ddf/stubble_lines.h>
 #include <ddfcam/ddf/surface_sampling.h>
 #include <ddfcam/gui/adapters/poly_data.h>
+#include <ddfcam/gui/adapters/raster_field_surface.h>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <utility>
+#include <vector>
 
 namespace ddfcam::gui {
 
@@ -42,27 +46,43 @@ void buildRasterSurface(const ddf::DisplacementField& ddf, PartGeometry& out) {
   out.scene.surface = toSurfacePolyData(raster.mesh, out.surfaceTriangleFace);
 }
 
+/// Corner parameters of every triangle in snapshot order (face after face, each face's
+/// triangles in order), for fields at raster resolution.
+void setCornerParams(const ddf::DisplacementField& ddf,
+                     const ddf::IncrementalTriangulation& triangulation, SceneGeometry& scene) {
+  auto params = std::make_shared<std::vector<float>>();
+  params->reserve(6 * triangulation.triangleCount());
+  for (int f = 0; f < ddf.faceCount(); ++f)
+    for (const ddf::TriangleParams& corners : triangulation.faceTriangleParams(f))
+      for (const auto& ik : corners) params->insert(params->end(), ik.begin(), ik.end());
+  scene.surfaceCornerParams = std::move(params);
+  scene.rasterFaces = ddf.faceCount();
+  scene.rasterSteps = ddf.resolution() - 1;
+}
+
 void buildSurface(const ddf::DisplacementField& ddf, const DisplayParams& params, double diagonalMm,
                   PartGeometry& out) {
   const double n = ddf.resolution() - 1;
   const double rasterTriangles = static_cast<double>(ddf.faceCount()) * n * n;
   if (rasterTriangles <= static_cast<double>(params.rasterTriangleBudget))
     return buildRasterSurface(ddf, out);
-  ddf::AdaptiveTriangulationParams adaptive;
-  adaptive.epsMm = std::max(params.adaptiveEpsFraction * diagonalMm, 1e-6);
-  ddf::AdaptiveTriangulation result = ddf::triangulateAdaptiveWithStats(ddf, adaptive);
+  double epsMm = std::max(params.adaptiveEpsFraction * diagonalMm, 1e-6);
+  ddf::IncrementalTriangulation triangulation(ddf, epsMm);
   // Coarsen until the budget holds; a few rounds suffice since the count falls ~4x per round.
-  for (int round = 0; round < 6 && result.mesh.triangles.size() > params.adaptiveTriangleBudget;
-       ++round) {
-    adaptive.epsMm *= 4.0;
-    result = ddf::triangulateAdaptiveWithStats(ddf, adaptive);
+  for (int round = 0;
+       round < 6 && triangulation.triangleCount() > params.adaptiveTriangleBudget; ++round) {
+    epsMm *= 4.0;
+    triangulation.setFaceEps(std::vector<float>(ddf.faceCount(), static_cast<float>(epsMm)));
   }
+  ddf::AdaptiveTriangulation result = triangulation.snapshot();
   out.adaptiveSurface = true;
-  out.adaptiveEpsMm = adaptive.epsMm;
+  out.adaptiveEpsMm = epsMm;
   out.surfaceTriangles = result.mesh.triangles.size();
   out.surfaceSamples = ddf::sampleMeshVertices(ddf, result.mesh, result.triangleFace);
   out.scene.surface = toSurfacePolyData(result.mesh, result.triangleFace);
   out.surfaceTriangleFace = std::move(result.triangleFace);
+  if (RasterFieldSurface::available(ddf.faceCount(), ddf.resolution() - 1))
+    setCornerParams(ddf, triangulation, out.scene);
 }
 
 }  // namespace

@@ -4,9 +4,11 @@
 
 #include <ddfcam/error.h>
 #include <ddfcam/gui/adapters/poly_data.h>
+#include <ddfcam/gui/adapters/raster_field_surface.h>
 #include <ddfcam/gui/adapters/tolerance_colours.h>
 #include <ddfcam/gui/vtk_view.h>
 
+#include "part_scene_look.h"
 #include "scalar_bar.h"
 
 #include <vtkActor.h>
@@ -33,7 +35,26 @@
 
 namespace ddfcam::gui {
 
+vtkPolyDataMapper* detail::mapperOf(vtkActor* actor) {
+  return vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+}
+
+void detail::styleSurface(vtkProperty* p) {
+  p->SetColor(kSurfaceRgb[0], kSurfaceRgb[1], kSurfaceRgb[2]);
+  p->SetAmbient(0.10);
+  p->SetDiffuse(0.80);
+  p->SetSpecular(0.25);
+  p->SetSpecularPower(30.0);
+  p->SetInterpolationToPhong();
+  // Back faces (the inside of the crust) in a darker tone so open parts read correctly.
+  p->BackfaceCullingOff();
+}
+
 namespace {
+
+using detail::mapperOf;
+using detail::kSurfaceRgb;
+using detail::styleSurface;
 
 vtkSmartPointer<vtkActor> makeActor() {
   auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
@@ -44,56 +65,11 @@ vtkSmartPointer<vtkActor> makeActor() {
   return actor;
 }
 
-vtkPolyDataMapper* mapperOf(vtkActor* actor) {
-  return vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
-}
-
-void styleSurface(vtkProperty* p) {
-  p->SetColor(0.80, 0.72, 0.55);  // brushed brass: grinding targets are metal
-  p->SetAmbient(0.10);
-  p->SetDiffuse(0.80);
-  p->SetSpecular(0.25);
-  p->SetSpecularPower(30.0);
-  p->SetInterpolationToPhong();
-  // Back faces (the inside of the crust) in a darker tone so open parts read correctly.
-  p->BackfaceCullingOff();
-}
-
 void styleLines(vtkProperty* p, double r, double g, double b, float width) {
   p->SetColor(r, g, b);
   p->SetLineWidth(width);
   p->LightingOff();
   p->SetRepresentationToWireframe();
-}
-
-/// Path of the first existing file of @p candidates, or "".
-/// Whether any value lies clearly below @p lo / above @p hi: interpolation at display vertices
-/// puts values that sit on an end of the range a rounding error beyond it (-1e-17 for 0).
-std::pair<bool, bool> outOfRange(const std::vector<float>& values, double lo, double hi) {
-  const double slack = 1e-6 * (hi - lo);
-  bool below = false, above = false;
-  for (float v : values) {
-    below = below || v < lo - slack;
-    above = above || v > hi + slack;
-  }
-  return {below, above};
-}
-
-/// One value per point of @p surface: split points (feature edges) take the value of the mesh
-/// vertex they copy ("vertex" point data).
-vtkSmartPointer<vtkFloatArray> pointScalars(vtkPolyData* surface,
-                                            const std::vector<float>& perVertexValues) {
-  vtkDataArray* vertexIds = surface->GetPointData()->GetArray(kVertexArrayName);
-  const vtkIdType points = surface->GetNumberOfPoints();
-  auto scalars = vtkSmartPointer<vtkFloatArray>::New();
-  scalars->SetName("field");
-  scalars->SetNumberOfTuples(points);
-  for (vtkIdType p = 0; p < points; ++p) {
-    const auto v =
-        vertexIds ? static_cast<std::size_t>(vertexIds->GetTuple1(p)) : static_cast<std::size_t>(p);
-    scalars->SetValue(p, perVertexValues[v]);
-  }
-  return scalars;
 }
 
 /// The renderer of layer 1 in @p renderer's window, or @p renderer if there is none.
@@ -165,12 +141,12 @@ PartScene::~PartScene() {
 void PartScene::setGeometry(const SceneGeometry& geometry) {
   clearSurfaceField();
   surface_ = geometry.surface;
-  vtkActor* surfaceActor = actors_[static_cast<int>(Layer::Surface)];
-  surfaceActor->SetTexture(geometry.surfaceTexture);
-  if (geometry.surfaceTexture)
-    surfaceActor->GetProperty()->SetColor(1.0, 1.0, 1.0);  // the texture's colours, lit
-  else
-    styleSurface(surfaceActor->GetProperty());
+  surfaceTexture_ = geometry.surfaceTexture;
+  rasterField_.reset();
+  cornerParams_ = geometry.surfaceCornerParams;
+  rasterFaces_ = geometry.rasterFaces;
+  rasterSteps_ = geometry.rasterSteps;
+  showPlainSurface();
   const std::array<vtkPolyData*, kLayerCount> data = {geometry.surface, geometry.support,
                                                       geometry.stubbles};
   for (int l = 0; l < kLayerCount; ++l) {
@@ -179,6 +155,16 @@ void PartScene::setGeometry(const SceneGeometry& geometry) {
     else
       mapperOf(actors_[l])->SetInputData(vtkSmartPointer<vtkPolyData>::New());
   }
+}
+
+void PartScene::showPlainSurface() {
+  vtkActor* surfaceActor = actors_[static_cast<int>(Layer::Surface)];
+  surfaceActor->SetTexture(surfaceTexture_);
+  // Only the colour: the rest of the material may have been adjusted through actor().
+  if (surfaceTexture_)
+    surfaceActor->GetProperty()->SetColor(1.0, 1.0, 1.0);  // the texture's colours, lit
+  else
+    surfaceActor->GetProperty()->SetColor(kSurfaceRgb[0], kSurfaceRgb[1], kSurfaceRgb[2]);
 }
 
 void PartScene::setVisible(Layer layer, bool visible) {
@@ -201,86 +187,6 @@ long long PartScene::cellCount(Layer layer) const {
 
 vtkActor* PartScene::actor(Layer layer) const {
   return actors_[static_cast<int>(layer)];
-}
-
-long long PartScene::surfaceVertexCount() const {
-  if (!surface_) return 0;
-  vtkDataArray* ids = surface_->GetPointData()->GetArray(kVertexArrayName);
-  if (!ids || ids->GetNumberOfTuples() == 0) return surface_->GetNumberOfPoints();
-  return static_cast<long long>(std::llround(ids->GetRange(0)[1])) + 1;
-}
-
-void PartScene::setSurfaceField(const std::vector<float>& perVertexValues,
-                                const FieldStyle& style) {
-  if (!surface_ || surface_->GetNumberOfPoints() == 0)
-    throw InvalidInput("setSurfaceField: the scene shows no surface to colour");
-  const long long vertices = surfaceVertexCount();
-  if (static_cast<long long>(perVertexValues.size()) != vertices)
-    throw InvalidInput("setSurfaceField: field '" + style.title + "' has " +
-                       std::to_string(perVertexValues.size()) + " values, the surface has " +
-                       std::to_string(vertices) + " vertices");
-  vtkSmartPointer<vtkLookupTable> table =
-      style.band ? makeToleranceLookupTable(style.lo, style.hi, *style.band)
-                 : makeLookupTable(style.map, style.lo, style.hi);
-  // Out-of-range colours only when values are out of range: with colours interpolated before
-  // mapping, values exactly at an end of the range would otherwise speckle with them.
-  const auto [below, above] = outOfRange(perVertexValues, style.lo, style.hi);
-  table->SetUseBelowRangeColor(below ? 1 : 0);
-  table->SetUseAboveRangeColor(above ? 1 : 0);
-  scalarBar_->SetDrawBelowRangeSwatch(below);
-  scalarBar_->SetDrawAboveRangeSwatch(above);
-
-  // A shallow copy carries the scalars, so the caller's polydata (shared with PartGeometry)
-  // is never modified.
-  auto shown = vtkSmartPointer<vtkPolyData>::New();
-  shown->ShallowCopy(surface_);
-  shown->GetPointData()->SetScalars(pointScalars(surface_, perVertexValues));
-
-  vtkPolyDataMapper* mapper = mapperOf(actors_[static_cast<int>(Layer::Surface)]);
-  mapper->SetInputData(shown);
-  mapper->SetLookupTable(table);
-  // The table's own range is authoritative; the mapper must not overwrite it.
-  mapper->UseLookupTableScalarRangeOn();
-  mapper->SetScalarModeToUsePointData();
-  mapper->SetColorModeToMapScalars();
-  // Colours interpolated in value space (a 1D texture) keep a sharp map across big triangles.
-  mapper->InterpolateScalarsBeforeMappingOn();
-  mapper->ScalarVisibilityOn();
-  scalarBar_->SetLookupTable(table);
-  scalarBar_->SetLabelFormat(scaleLabelFormat(style.lo, style.hi).c_str());
-  scalarBar_->SetTitle(style.title.c_str());
-  if (style.stale)
-    scalarBar_->GetTitleTextProperty()->SetColor(1.0, 0.62, 0.15);
-  else
-    scalarBar_->GetTitleTextProperty()->SetColor(0.93, 0.93, 0.93);
-  scalarBar_->SetVisibility(1);
-  fieldShown_ = true;
-}
-
-void PartScene::clearSurfaceField() {
-  vtkPolyDataMapper* mapper = mapperOf(actors_[static_cast<int>(Layer::Surface)]);
-  mapper->ScalarVisibilityOff();
-  if (fieldShown_)
-    mapper->SetInputData(surface_ ? surface_.Get() : vtkSmartPointer<vtkPolyData>::New().Get());
-  scalarBar_->SetVisibility(0);
-  scalarBar_->SetTitle("");
-  fieldShown_ = false;
-}
-
-bool PartScene::isFieldShown() const {
-  return fieldShown_;
-}
-
-std::string PartScene::scalarBarTitle() const {
-  const char* title = scalarBar_->GetTitle();
-  return fieldShown_ && title ? std::string(title) : std::string();
-}
-
-ValueRange PartScene::scalarRange() const {
-  if (!fieldShown_) return {0.0, 0.0};
-  const double* range =
-      mapperOf(actors_[static_cast<int>(Layer::Surface)])->GetLookupTable()->GetRange();
-  return {range[0], range[1]};
 }
 
 void PartScene::setOverlay(const std::string& name, vtkSmartPointer<vtkPolyData> data,

@@ -196,8 +196,13 @@ void PartView::applyFieldDisplay() {
   style.stale = planning::isStale(*field, *p.part);
   style.title = fieldTitle(*field, style.stale);
   style.band = display_.band;
-  scene_->setSurfaceField(ddf::valuesAtSamples(*p.part, field->values, geometry_->surfaceSamples),
-                          style);
+  // A coarse adaptive display would average a narrow groove or band away between its
+  // vertices; through the raster texture every raster point keeps its own colour.
+  if (scene_->showsRasterFields())
+    scene_->setSurfaceRasterField(field->values, style);
+  else
+    scene_->setSurfaceField(
+        ddf::valuesAtSamples(*p.part, field->values, geometry_->surfaceSamples), style);
   emit fieldDisplayChanged();
 }
 

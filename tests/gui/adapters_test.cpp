@@ -56,6 +56,21 @@ Eigen::Vector3d baryXy(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const
   return {1.0 - st.x() - st.y(), st.x(), st.y()};
 }
 
+/// The raster mesh of @p ddf (fig. 7.1a) at parameter position (u, w), raster steps, of face
+/// @p f: linear over the raster triangle holding it.
+Eigen::Vector3d rasterMeshPoint(const ddfcam::ddf::DisplacementField& ddf, int f, double u,
+                                double w) {
+  const int n = ddf.resolution() - 1;
+  const int i = std::clamp(static_cast<int>(std::floor(u)), 0, n - 1);
+  const int k = std::clamp(static_cast<int>(std::floor(w)), 0, n - 1 - i);
+  const double a = u - i, b = w - k;
+  const auto p = [&](int ii, int kk) { return ddf.surfacePoint(f, ii, kk); };
+  if (a + b <= 1.0 || i + k + 2 > n)
+    return p(i, k) + a * (p(i + 1, k) - p(i, k)) + b * (p(i, k + 1) - p(i, k));
+  return p(i + 1, k + 1) + (1.0 - a) * (p(i, k + 1) - p(i + 1, k + 1)) +
+         (1.0 - b) * (p(i + 1, k) - p(i + 1, k + 1));
+}
+
 }  // namespace
 
 class AdaptersTest : public QObject {
@@ -68,6 +83,7 @@ class AdaptersTest : public QObject {
   void planePatchRasterOrAdaptiveByBudget();
   void surfaceKeepsVertexOfSplitPointsAndFaceOfCells();
   void planeGeometryFacesAndSamplesMatchTheSupport();
+  void adaptiveCornerParamsLieOnTheRasterMesh();
   void polylinesKeepPointOrder();
   void glyphsAreArrowsOfTheGivenLength();
 };
@@ -277,6 +293,42 @@ void AdaptersTest::glyphsAreArrowsOfTheGivenLength() {
                            ddfcam::gui::toGlyphPolyData(points, directions, 0.0));
   QVERIFY_THROWS_EXCEPTION(ddfcam::InvalidInput, ddfcam::gui::toGlyphPolyData(
                                                      {{0, 0, 0}}, {Eigen::Vector3d::Zero()}, 1.0));
+}
+
+void AdaptersTest::adaptiveCornerParamsLieOnTheRasterMesh() {
+  // A sphere's DDF (320 faces, m = 17) shown adaptively: every triangle corner's raster
+  // position must name the point of the surface the corner approximates, within the
+  // triangulation's bound (straight midpoints and centroids lie off the surface by up to eps).
+  ddfcam::ddf::SphereParams sphere;
+  sphere.subdivisions = 2;
+  const auto part = ddfcam::ddf::spherePart(sphere);
+  ddfcam::gui::DisplayParams params;
+  params.rasterTriangleBudget = 1000;
+  const auto geometry = ddfcam::gui::buildPartGeometry(part.ddf, params);
+  QVERIFY(geometry.adaptiveSurface);
+  QCOMPARE(geometry.scene.rasterFaces, part.ddf.faceCount());
+  QCOMPARE(geometry.scene.rasterSteps, 16);
+  QVERIFY(geometry.scene.surfaceCornerParams != nullptr);
+  const std::vector<float>& corners = *geometry.scene.surfaceCornerParams;
+  vtkPolyData* surface = geometry.scene.surface;
+  QCOMPARE(corners.size(), 6 * static_cast<std::size_t>(surface->GetNumberOfCells()));
+  double worst = 0.0;
+  for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c) {
+    const auto ids = cellPoints(surface, c);
+    for (int k = 0; k < 3; ++k) {
+      const double u = corners[6 * c + 2 * k], w = corners[6 * c + 2 * k + 1];
+      QVERIFY(u >= 0.0 && w >= 0.0 && u + w <= 16.0 + 1e-4);
+      const Eigen::Vector3d onMesh =
+          rasterMeshPoint(part.ddf, geometry.surfaceTriangleFace[c], u, w);
+      worst = std::max(worst, (onMesh - pointOf(surface, ids[k])).norm());
+    }
+  }
+  QVERIFY2(worst <= geometry.adaptiveEpsMm * (1.0 + 1e-3) + 1e-5,
+           qPrintable(QString("corner off its raster position by %1 mm, eps %2 mm")
+                          .arg(worst)
+                          .arg(geometry.adaptiveEpsMm)));
+  // Not trivially zero: the adaptive mesh has straight midpoints off the sphere's raster mesh.
+  QVERIFY(worst > 0.0);
 }
 
 QTEST_APPLESS_MAIN(AdaptersTest)

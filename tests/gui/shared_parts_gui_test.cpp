@@ -9,11 +9,14 @@
 
 #include <ddfcam/ddf/raster_mesh.h>
 #include <ddfcam/ddf/raster_normal.h>
+#include <ddfcam/gui/adapters/colour_map.h>
+#include <ddfcam/gui/adapters/raster_texture_atlas.h>
 #include <ddfcam/gui/panels/fields_panel.h>
 #include <ddfcam/gui/panels/simulation_panel.h>
 #include <ddfcam/gui/panels/simulation_playback.h>
 #include <ddfcam/gui/panels/segmentation_panel.h>
 #include <ddfcam/gui/panels/streamlines_panel.h>
+#include <ddfcam/gui/part_geometry.h>
 #include <ddfcam/gui/part_scene.h>
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/vtk_view.h>
@@ -32,6 +35,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
 using ddfcam::gui::FieldKind;
@@ -74,6 +78,8 @@ class SharedPartsGuiTest : public ddfcam::test::WorkbenchTest {
   bool openMesh(const char* file);
   /// Colours the part by k_max and checks the scalar bar against the data.
   void colourByKMax();
+  /// On an adaptive display, the field's texture holds every raster point's own colour.
+  void checkRasterColours(const std::vector<float>& values);
 };
 
 bool SharedPartsGuiTest::openMesh(const char* file) {
@@ -87,6 +93,35 @@ bool SharedPartsGuiTest::openMesh(const char* file) {
   qInfo("%s opened in %lld ms (m = %d, %d faces)", file, static_cast<long long>(timer.elapsed()),
         project().part->resolution(), project().part->faceCount());
   return true;
+}
+
+void SharedPartsGuiTest::checkRasterColours(const std::vector<float>& values) {
+  const auto& scene = f_.window->partView().scene();
+  const auto& part = *project().part;
+  const bool adaptive = f_.window->partView().geometry()->adaptiveSurface;
+  QCOMPARE(scene.rasterFieldAtlas() != nullptr, adaptive);
+  if (!adaptive) return;
+  const auto* atlas = scene.rasterFieldAtlas();
+  const auto& display = f_.window->partView().fieldDisplay();
+  const int n = part.resolution() - 1;
+  std::mt19937 random(7);
+  int checked = 0;
+  for (int sample = 0; sample < 2000; ++sample) {
+    const int face = std::uniform_int_distribution<int>(0, part.faceCount() - 1)(random);
+    const int k = std::uniform_int_distribution<int>(0, n)(random);
+    const int i = std::uniform_int_distribution<int>(0, n - k)(random);
+    const float v = values[face * part.pointsPerFace() + part.raster().index(i, k)];
+    if (!std::isfinite(v) || v < display.lo || v > display.hi) continue;
+    const auto st = atlas->texCoord(face, static_cast<float>(i), static_cast<float>(k));
+    const auto texel = atlas->texel(static_cast<int>(st[0] * atlas->width()),
+                                    static_cast<int>(st[1] * atlas->height()));
+    const auto rgb = ddfcam::gui::colourAt(display.map, (v - display.lo) / (display.hi - display.lo));
+    for (int c = 0; c < 3; ++c)
+      QVERIFY2(std::abs(texel[c] - 255.0 * rgb[c]) <= 6.0,
+               qPrintable(QString("face %1 point (%2, %3) value %4").arg(face).arg(i).arg(k).arg(v)));
+    ++checked;
+  }
+  QVERIFY(checked > 1000);
 }
 
 void SharedPartsGuiTest::colourByKMax() {
@@ -119,6 +154,7 @@ void SharedPartsGuiTest::colourByKMax() {
   const auto range = scene.scalarRange();
   QCOMPARE(range.lo, -range.hi);
   QVERIFY(std::abs(range.hi - expected) <= 1e-6 * expected);
+  checkRasterColours(kMax.values);
   qInfo("automatic range +-%.4g 1/mm (%s), largest |k_max| %.4g", range.hi,
         spiky ? "1-99 % quantiles: spikes" : "full range", largest);
   // Sensible: curvature of a part-sized sphere is 2 / diagonal; a useful map is not washed out

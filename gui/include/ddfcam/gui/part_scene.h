@@ -16,17 +16,23 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <optional>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 class vtkActor;
 class vtkCellLocator;
+class vtkLookupTable;
 class vtkRenderer;
 class vtkScalarBarActor;
 
 namespace ddfcam::gui {
 
+class RasterFieldSurface;
+class RasterTextureAtlas;
 class VtkView;
 
 /// @brief What the workbench can draw of a part.
@@ -45,6 +51,13 @@ struct SceneGeometry {
   /// Colours of the surface at raster resolution through its point texture coordinates (e.g.
   /// the live tolerance band); null: the plain surface colour or a field.
   vtkSmartPointer<vtkTexture> surfaceTexture;
+  /// Where the surface's triangle corners lie on the part's raster, for fields shown at raster
+  /// resolution (PartScene::setSurfaceRasterField): 6 floats per surface triangle, (i, k) of
+  /// its corners in the cell's point order, raster steps on the triangle's support face ("face"
+  /// cell data); null: fields are coloured per display vertex only.
+  std::shared_ptr<const std::vector<float>> surfaceCornerParams;
+  int rasterFaces = 0;  ///< support faces of the raster the corner parameters refer to
+  int rasterSteps = 0;  ///< its raster steps per face edge (m - 1)
 };
 
 /// @brief How a scalar field is shown on the surface.
@@ -121,6 +134,20 @@ class PartScene {
   /// @throws InvalidInput if the scene has no surface, the value count differs from
   /// surfaceVertexCount(), or style.lo >= style.hi or either is not finite.
   void setSurfaceField(const std::vector<float>& perVertexValues, const FieldStyle& style);
+  /// @brief Whether the surface can show fields at raster resolution: the geometry came with
+  /// corner parameters (SceneGeometry::surfaceCornerParams) and the raster fits a texture.
+  bool showsRasterFields() const;
+  /// @brief Colours the surface by @p rasterValues, one per raster point laid out like the
+  /// heights (face after face, Raster order), through a texture with one texel per raster
+  /// point: a groove or band narrower than the display triangles still shows. Colours, range,
+  /// out-of-range swatches and scalar bar as setSurfaceField(); each raster point's colour
+  /// covers the parameter cell around it (no blending between points). The textured copy of
+  /// the surface is made on first use and kept until the geometry changes.
+  /// @throws InvalidInput unless showsRasterFields(), or if the value count is not the raster's.
+  void setSurfaceRasterField(std::span<const float> rasterValues, const FieldStyle& style);
+  /// @brief The texture atlas the shown field is drawn from, or null when no field is shown at
+  /// raster resolution (e.g. for tests that check its texels).
+  const RasterTextureAtlas* rasterFieldAtlas() const;
   /// @brief Back to the plain surface colour; hides the scalar bar.
   void clearSurfaceField();
   /// @brief True while a field colours the surface.
@@ -168,11 +195,19 @@ class PartScene {
 
  private:
   vtkActor* overlayActor(const std::string& name, const char* caller) const;
+  // The geometry's own look: its texture (e.g. the live tolerance band) or the surface colour.
+  void showPlainSurface();
+  void showScalarBar(vtkLookupTable* table, const FieldStyle& style,
+                     std::pair<bool, bool> outOfRange);
 
   vtkSmartPointer<vtkRenderer> renderer_;
   vtkSmartPointer<vtkRenderer> annotationRenderer_;
   std::array<vtkSmartPointer<vtkActor>, kLayerCount> actors_;
   vtkSmartPointer<vtkPolyData> surface_;  ///< the surface as given, without field scalars
+  vtkSmartPointer<vtkTexture> surfaceTexture_;  ///< the geometry's texture, may be null
+  std::shared_ptr<const std::vector<float>> cornerParams_;
+  int rasterFaces_ = 0, rasterSteps_ = 0;
+  std::unique_ptr<RasterFieldSurface> rasterField_;  ///< made on the first raster field
   vtkSmartPointer<vtkScalarBarActor> scalarBar_;
   bool fieldShown_ = false;
   std::map<std::string, vtkSmartPointer<vtkActor>> overlays_;

@@ -73,8 +73,14 @@ ValueRange defaultRange(double min, double max, bool isSigned);
 /// enough not to run into each other (exponents like "-1.31e+03" do).
 std::string scaleLabelFormat(double lo, double hi);
 
+/// @brief Colour of "no value" (NaN, e.g. a deviation where the desired surface has no point)
+/// in every lookup table of the workbench: neutral grey, RGB in [0, 1]. (VTK's default is dark
+/// red, which on an error map would read as overcut.)
+inline constexpr std::array<double, 3> kNoValueRgb = {0.5, 0.5, 0.5};
+
 /// @brief A lookup table of @p colours entries sampling @p map evenly, mapping [@p lo, @p hi]
-/// onto it, with belowRangeColour() / aboveRangeColour() switched on for values outside. The
+/// onto it, with belowRangeColour() / aboveRangeColour() switched on for values outside and
+/// kNoValueRgb for NaN. The
 /// table is complete: do not call Build() on it expecting a rebuild (VTK would only refresh its
 /// special colours).
 /// @throws InvalidInput if lo >= hi, either is not finite, or colours < 2.

@@ -6,7 +6,9 @@
 #include <vtkSmartPointer.h>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 class vtkImageData;
@@ -15,11 +17,14 @@ class vtkTexture;
 namespace ddfcam::gui {
 
 /// @brief A texture atlas with one opaque RGBA texel per raster point: support face f's
-/// triangular raster (steps + 1 points per edge) occupies square block (f mod columns, f div columns) of
-/// (steps + 1)^2 texels, raster point (i, k) at texel (i, k) of its block; texels outside the
-/// triangle (i + k > steps) repeat (steps - k, k). Sampled nearest with texel centres on the
-/// raster points, so a fragment at parameter position (u, w) shows raster point (round(u),
-/// round(w)): each colour covers the parameter cell around its point, whatever the mesh.
+/// triangular raster (steps + 1 points per edge) occupies square block (f mod columns,
+/// f div columns) of (steps + 1)^2 texels, raster point (i, k) at texel (i, k) of its block;
+/// texels outside the triangle (i + k > steps) repeat (steps - k, k). Sampled nearest with texel
+/// centres on the raster points, so a fragment at parameter position (u, w) shows raster point
+/// (round(u), round(w)): each colour covers the parameter cell around its point, whatever the
+/// mesh. (Linear sampling would be bilinear over the square lattice, not linear over the
+/// raster's triangles: a line of raster points along i + k = const would fade to half between
+/// them.)
 class RasterTextureAtlas {
  public:
   /// Largest texture side used, texels: what every OpenGL 3.2 implementation (Mesa's llvmpipe
@@ -42,6 +47,11 @@ class RasterTextureAtlas {
   /// uploads whole); later changes reach the GPU through uploadChanged().
   /// @throws InvalidInput if @p classes has another size than faces * pointsPerFace.
   void setClasses(const std::vector<std::uint8_t>& classes);
+  /// @brief Colours every raster point: @p rgba holds 4 bytes (red, green, blue, alpha) per
+  /// raster point, laid out like the heights (e.g. a field through a colour map). Rewrites the
+  /// whole atlas, which VTK then uploads whole.
+  /// @throws InvalidInput if @p rgba has another size than 4 * faces * pointsPerFace.
+  void setColours(std::span<const std::uint8_t> rgba);
   /// @brief Sends the blocks of the faces rewritten since the last upload to the texture VTK
   /// made of this atlas (glTexSubImage2D per block). Call with the view's GL context current,
   /// before VTK renders (the renderer's StartEvent); before VTK made the texture, it marks the
@@ -57,7 +67,10 @@ class RasterTextureAtlas {
   int lastRewrittenFaces() const { return lastRewritten_; }
 
  private:
-  void writeFace(int face, const std::uint8_t* classes);
+  // Writes face's block; colourOfPoint(p) gives the 4 bytes of the face's raster point p.
+  template <typename Colour>
+  void writeFace(int face, Colour colourOfPoint);
+  void checkSize(std::size_t points, const char* caller) const;
   void wholeImageChanged();
 
   int faces_, steps_, block_, columns_, width_, height_;

@@ -32,8 +32,9 @@ planning::ToleranceClass toleranceClassOfColour(const std::array<double, 3>& rgb
 
 /// @brief Lookup table of @p colours entries sampling toleranceColourAt() at the centres of
 /// equal cells over [@p loMm, @p hiMm]; the special below- and above-range colours are the
-/// darkest red and blue. A cell straddling a band bound takes the class of its centre, so the
-/// view may misclassify values within (hi - lo) / colours of a bound.
+/// darkest red and blue, NaN is kNoValueRgb (colour_map.h). A cell straddling a band bound
+/// takes the class of its centre, so the view may misclassify values within
+/// (hi - lo) / colours of a bound.
 /// @throws InvalidInput if lo >= hi, either is not finite, colours < 2, or the band is invalid.
 vtkSmartPointer<vtkLookupTable> makeToleranceLookupTable(double loMm, double hiMm,
                                                          const planning::ToleranceBand& band,
