@@ -87,27 +87,44 @@ void LiveSurfacePolyData::apply(const planning::LiveFrame& frame) {
 
 void LiveSurfacePolyData::applyTextured(const planning::LiveFrame& frame) {
   atlas_->setClasses(frame.toleranceClasses);
+  // One point per (vertex slot, support face): the triangles of a face share their corners,
+  // only a slot on a face border gets a copy per face (its texture coordinates differ there).
   const std::size_t corners = frame.triangles.size();
+  slotFace_.assign(frame.positions.size() / 3, -1);
+  slotPoint_.resize(slotFace_.size());
+  connectivity_.resize(corners);
+  points_.clear();
+  for (std::size_t c = 0; c < corners; ++c) {
+    const auto slot = static_cast<std::size_t>(frame.triangles[c]);
+    const int face = frame.triangleFace[c / 3];
+    if (slotFace_[slot] != face) {
+      slotFace_[slot] = face;
+      slotPoint_[slot] = static_cast<int>(points_.size());
+      points_.push_back(c);
+    }
+    connectivity_[c] = slotPoint_[slot];
+  }
   auto* positions = vtkFloatArray::SafeDownCast(data_->GetPoints()->GetData());
   auto* normals = vtkFloatArray::SafeDownCast(data_->GetPointData()->GetNormals());
   auto* tcoords = vtkFloatArray::SafeDownCast(data_->GetPointData()->GetTCoords());
   for (vtkFloatArray* a : {positions, normals, tcoords})
-    a->SetNumberOfTuples(static_cast<vtkIdType>(corners));
+    a->SetNumberOfTuples(static_cast<vtkIdType>(points_.size()));
   float* p = positions->GetPointer(0);
   float* n = normals->GetPointer(0);
   float* t = tcoords->GetPointer(0);
-  for (std::size_t c = 0; c < corners; ++c) {
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    const std::size_t c = points_[i];
     const std::size_t slot = 3 * static_cast<std::size_t>(frame.triangles[c]);
-    std::memcpy(p + 3 * c, frame.positions.data() + slot, 3 * sizeof(float));
-    std::memcpy(n + 3 * c, frame.normals.data() + slot, 3 * sizeof(float));
+    std::memcpy(p + 3 * i, frame.positions.data() + slot, 3 * sizeof(float));
+    std::memcpy(n + 3 * i, frame.normals.data() + slot, 3 * sizeof(float));
     const auto st = atlas_->texCoord(frame.triangleFace[c / 3], frame.cornerParams[2 * c],
                                      frame.cornerParams[2 * c + 1]);
-    t[2 * c] = st[0];
-    t[2 * c + 1] = st[1];
+    t[2 * i] = st[0];
+    t[2 * i + 1] = st[1];
   }
   for (vtkFloatArray* a : {positions, normals, tcoords}) a->Modified();
   data_->GetPoints()->Modified();
-  setCells(frame, true);
+  setCells(frame, connectivity_);
 }
 
 void LiveSurfacePolyData::applyShared(const planning::LiveFrame& frame) {
@@ -116,22 +133,19 @@ void LiveSurfacePolyData::applyShared(const planning::LiveFrame& frame) {
   data_->GetPoints()->Modified();
   copyFloats(vtkFloatArray::SafeDownCast(data_->GetPointData()->GetNormals()), frame.normals);
   vtkFloatArray::SafeDownCast(data_->GetPointData()->GetTCoords())->SetNumberOfTuples(0);
-  setCells(frame, false);
+  setCells(frame, frame.triangles);
 }
 
-void LiveSurfacePolyData::setCells(const planning::LiveFrame& frame, bool ownCorners) {
+void LiveSurfacePolyData::setCells(const planning::LiveFrame& frame,
+                                   const std::vector<std::int32_t>& corners) {
   const vtkIdType triangles = static_cast<vtkIdType>(frame.triangleFace.size());
   auto offsets = vtkSmartPointer<vtkTypeInt32Array>::New();
   offsets->SetNumberOfValues(triangles + 1);
   for (vtkIdType t = 0; t <= triangles; ++t) offsets->SetValue(t, static_cast<int>(3 * t));
   auto connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
   connectivity->SetNumberOfValues(3 * triangles);
-  if (ownCorners) {
-    for (vtkIdType c = 0; c < 3 * triangles; ++c) connectivity->SetValue(c, static_cast<int>(c));
-  } else if (triangles > 0) {
-    std::memcpy(connectivity->GetPointer(0), frame.triangles.data(),
-                frame.triangles.size() * sizeof(std::int32_t));
-  }
+  if (triangles > 0)
+    std::memcpy(connectivity->GetPointer(0), corners.data(), corners.size() * sizeof(std::int32_t));
   data_->GetPolys()->SetData(offsets, connectivity);
   auto* faces = vtkIntArray::SafeDownCast(data_->GetCellData()->GetArray(kFaceArrayName));
   faces->SetNumberOfValues(triangles);

@@ -2,6 +2,7 @@
 // Core values -> vtkPolyData, and the display policy, against counts and shapes known in advance.
 #include <ddfcam/ddf/analytic_generators.h>
 #include <ddfcam/error.h>
+#include <ddfcam/gui/adapters/live_surface.h>
 #include <ddfcam/gui/adapters/poly_data.h>
 #include <ddfcam/gui/part_geometry.h>
 
@@ -84,6 +85,7 @@ class AdaptersTest : public QObject {
   void surfaceKeepsVertexOfSplitPointsAndFaceOfCells();
   void planeGeometryFacesAndSamplesMatchTheSupport();
   void adaptiveCornerParamsLieOnTheRasterMesh();
+  void liveSurfaceSharesCornersWithinAFace();
   void polylinesKeepPointOrder();
   void glyphsAreArrowsOfTheGivenLength();
 };
@@ -329,6 +331,51 @@ void AdaptersTest::adaptiveCornerParamsLieOnTheRasterMesh() {
                           .arg(geometry.adaptiveEpsMm)));
   // Not trivially zero: the adaptive mesh has straight midpoints off the sphere's raster mesh.
   QVERIFY(worst > 0.0);
+}
+
+void AdaptersTest::liveSurfaceSharesCornersWithinAFace() {
+  // Two support faces (raster steps 2): face 0 has two triangles over slots 0-1-2 and 1-3-2,
+  // face 1 one triangle over slots 1-4-3, so slots 1 and 3 lie on the border between them.
+  ddfcam::planning::LiveFrame frame;
+  frame.faceCount = 2;
+  frame.rasterSteps = 2;
+  frame.positions = {0, 0, 0, 2, 0, 0, 0, 2, 0, 2, 2, 0, 4, 1, 0};
+  frame.normals.assign(frame.positions.size(), 0.0f);
+  for (std::size_t s = 0; s < 5; ++s) frame.normals[3 * s + 2] = 1.0f;
+  frame.triangles = {0, 1, 2, 1, 3, 2, 1, 4, 3};
+  frame.triangleFace = {0, 0, 1};
+  frame.cornerParams = {0, 0, 2, 0, 0, 2, 2, 0, 1, 1, 0, 2, 0, 0, 2, 0, 0, 2};
+  frame.toleranceClasses.assign(2 * 6, 1);
+  ddfcam::gui::LiveSurfacePolyData surface(2, 2);
+  surface.apply(frame);
+  vtkPolyData* poly = surface.polyData();
+  // Face 0 uses slots 0-3 (4 points), face 1 slots 1, 3, 4 (3 more): 7, not 9.
+  QCOMPARE(poly->GetNumberOfPoints(), vtkIdType{7});
+  QCOMPARE(poly->GetNumberOfCells(), vtkIdType{3});
+  vtkDataArray* tcoords = poly->GetPointData()->GetTCoords();
+  QVERIFY(tcoords != nullptr);
+  for (vtkIdType c = 0; c < 3; ++c) {
+    const auto ids = cellPoints(poly, c);
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t corner = 3 * static_cast<std::size_t>(c) + k;
+      const int slot = frame.triangles[corner];
+      QCOMPARE(pointOf(poly, ids[k]),
+               Eigen::Vector3d(frame.positions[3 * slot], frame.positions[3 * slot + 1],
+                               frame.positions[3 * slot + 2]));
+      const auto st = surface.atlas()->texCoord(frame.triangleFace[c],
+                                                frame.cornerParams[2 * corner],
+                                                frame.cornerParams[2 * corner + 1]);
+      QCOMPARE(static_cast<float>(tcoords->GetComponent(ids[k], 0)), st[0]);
+      QCOMPARE(static_cast<float>(tcoords->GetComponent(ids[k], 1)), st[1]);
+    }
+  }
+  // A second frame with other triangles refills the same polydata.
+  frame.triangles = {0, 1, 2};
+  frame.triangleFace = {0};
+  frame.cornerParams.resize(6);
+  surface.apply(frame);
+  QCOMPARE(poly->GetNumberOfPoints(), vtkIdType{3});
+  QCOMPARE(poly->GetNumberOfCells(), vtkIdType{1});
 }
 
 QTEST_APPLESS_MAIN(AdaptersTest)

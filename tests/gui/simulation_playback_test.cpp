@@ -49,6 +49,7 @@ class SimulationPlaybackTest : public ddfcam::test::PlaybackTestBase {
   void collisionsAreListedAndMarked();
   void timelineAndEventsSeekToTheStateOfThePose();
   void pauseAndStepActWithin100MsAndRatesAreShown();
+  void toolMovesBetweenPosesWhilePlayingSlowly();
   void longPathsAreAnnouncedWithTheirEstimate();
 };
 
@@ -314,6 +315,52 @@ void SimulationPlaybackTest::pauseAndStepActWithin100MsAndRatesAreShown() {
   QCOMPARE(playback().simulation()->nextPose(), paused + 1);
   // Playing at 30 poses/s for 0.7 s cannot have cut more than about 30 x 0.7 + 3 poses.
   QVERIFY2(paused <= 25, qPrintable(QString::number(paused)));
+  playback().cancel();
+}
+
+void SimulationPlaybackTest::toolMovesBetweenPosesWhilePlayingSlowly() {
+  loadDemo();
+  playback().setPosesPerSecond(5);  // a pose every 200 ms; the view renders every 25 ms
+  auto& view = *f_.window->view();
+  QVERIFY(playback().play());
+  QTRY_VERIFY_WITH_TIMEOUT(playback().posesCut() >= 2, 5000);
+  const auto& poses = project().paths[0].poses;
+  const Tool& tool = project().tools[0];
+  const auto centre = [](const std::array<double, 6>& b) {
+    return Eigen::Vector3d(b[0] + b[1], b[2] + b[3], b[4] + b[5]) / 2.0;
+  };
+  const std::uint64_t frames = view.renderedFrames();
+  QElapsedTimer span;
+  span.start();
+  int between = 0;
+  while (span.elapsed() < 800 && playback().isPlaying()) {
+    QTest::qWait(15);
+    const double at = playback().toolPosition();
+    const int pose = playback().shownPose();
+    QVERIFY2(at >= pose && at <= pose + 1.0, qPrintable(QString("%1 %2").arg(at).arg(pose)));
+    const double f = at - pose;
+    if (f < 0.05 || f > 0.95 || pose + 1 >= static_cast<int>(poses.size())) continue;
+    // On the straight way from the last cut pose to the next (the poses 0.5 mm apart barely
+    // turn the roll, so the centre of its bounds moves along the chord).
+    double b[6];
+    scene().overlayData(ddfcam::gui::kToolCuttingOverlay)->GetBounds(b);
+    const Eigen::Vector3d from = centre(toolBounds(tool, poses[pose].pose));
+    const Eigen::Vector3d to = centre(toolBounds(tool, poses[pose + 1].pose));
+    const Eigen::Vector3d drawn = centre({b[0], b[1], b[2], b[3], b[4], b[5]});
+    QVERIFY2((drawn - ((1.0 - f) * from + f * to)).norm() < 0.01 * (to - from).norm() + 1e-3,
+             qPrintable(QString("pose %1 + %2").arg(pose).arg(f)));
+    ++between;
+  }
+  const double rendered = (view.renderedFrames() - frames) / (span.elapsed() / 1000.0);
+  std::printf("playback at 5 poses/s: %.1f frames/s rendered, %d samples between poses\n",
+              rendered, between);
+  QVERIFY2(between >= 5, qPrintable(QString::number(between)));
+  // Far more frames than the 5 poses a second that change the surface.
+  QVERIFY2(rendered > 15.0, qPrintable(QString::number(rendered)));
+  // Paused, the tool is back at the last cut pose.
+  playback().pause();
+  QCOMPARE(playback().toolPosition(), static_cast<double>(playback().shownPose()));
+  QVERIFY(toolOverlayAt(playback().shownPose()));
   playback().cancel();
 }
 

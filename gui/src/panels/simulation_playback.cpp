@@ -246,7 +246,9 @@ void SimulationPlayback::pause() {
   workbench_.partView.view().setMotionRendering(false);
   if (!isActive()) return;
   live_->pause();
-  if (checkWorker()) showLatest();
+  if (!checkWorker()) return;
+  showLatest();
+  settleTool();
 }
 
 bool SimulationPlayback::step() {
@@ -280,10 +282,12 @@ void SimulationPlayback::tick() {
   }
   if (!checkWorker()) return;
   showLatest();
+  if (live_->isPlaying()) moveToolBetweenPoses();
   if (!live_->isPlaying()) {
     timer_->stop();
     workbench_.partView.view().setMotionRendering(false);
     showLatest();  // the worker's final frame
+    settleTool();
     finishIfDone();
     updateControls();
   }

@@ -16,7 +16,10 @@
 #include <QSignalBlocker>
 #include <QSlider>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
+#include <cmath>
 
 namespace ddfcam::gui {
 
@@ -69,9 +72,9 @@ void SimulationPlayback::showFrame(const planning::LiveFrame& frame) {
   const planning::ToolPath& path = path_;
   PartScene& scene = workbench_.partView.scene();
   const int pose = std::max(0, frame.posesCut - 1);
-  if (pose < static_cast<int>(path.poses.size()))
-    showToolOverlay(scene, tool_, path.poses[static_cast<std::size_t>(pose)].pose,
-                    isColliding(frame.report, pose));
+  shownColliding_ = isColliding(frame.report, pose);
+  showToolAt(pose);
+  shownAtMs_ = renderedAtMs_ = clock_.elapsed();
   // Markers and lists change only with new events: rebuilt then, not every frame.
   if (frame.report.collisions.size() != shownCollisions_) {
     std::vector<Eigen::Vector3d> marks;
@@ -94,6 +97,46 @@ void SimulationPlayback::showFrame(const planning::LiveFrame& frame) {
   showOvercut(frame);
   workbench_.partView.view().requestRender();
   updateControls();
+}
+
+void SimulationPlayback::showToolAt(double position) {
+  const auto& poses = path_.poses;
+  if (poses.empty()) return;
+  const double last = static_cast<double>(poses.size() - 1);
+  position = std::clamp(position, 0.0, last);
+  const auto i = static_cast<std::size_t>(std::floor(position));
+  const double f = position - static_cast<double>(i);
+  Eigen::Isometry3d pose = poses[i].pose;
+  if (f > 0.0 && i + 1 < poses.size()) {
+    const Eigen::Isometry3d& next = poses[i + 1].pose;
+    const Eigen::Quaterniond from(pose.rotation()), to(next.rotation());
+    pose.linear() = from.slerp(f, to).toRotationMatrix();
+    pose.translation() = (1.0 - f) * pose.translation() + f * next.translation();
+  }
+  toolPosition_ = position;
+  // Red only at the colliding pose itself: on the way to the next one it is not known yet.
+  showToolOverlay(workbench_.partView.scene(), tool_, pose, shownColliding_ && f == 0.0);
+}
+
+void SimulationPlayback::moveToolBetweenPoses() {
+  // At or above the display rate every frame already moves the tool by a pose or more; as
+  // fast as the machine can (rate <= 0) there is no rate to move at.
+  const double rate = posesPerSecond_;
+  if (rate <= 0.0 || rate * params_.frameIntervalMs >= 1000.0 || shownPosesCut_ <= 0) return;
+  const std::int64_t now = clock_.elapsed();
+  if (now - renderedAtMs_ < params_.frameIntervalMs) return;
+  // The next pose is cut about 1 / rate after the last one: the tool gets there meanwhile and
+  // waits there for the frame of that cut.
+  const double ahead = std::min(1.0, static_cast<double>(now - shownAtMs_) * rate / 1000.0);
+  showToolAt(shownPosesCut_ - 1 + ahead);
+  renderedAtMs_ = now;
+  workbench_.partView.view().requestRender();
+}
+
+void SimulationPlayback::settleTool() {
+  if (!live_ || toolPosition_ == std::floor(toolPosition_)) return;
+  showToolAt(std::max(0, shownPosesCut_ - 1));
+  workbench_.partView.view().requestRender();
 }
 
 void SimulationPlayback::showReport(const planning::GrindingReport& report) {

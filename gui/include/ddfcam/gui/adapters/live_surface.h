@@ -9,7 +9,10 @@
 #include <vtkPolyData.h>  // complete type: polyData() converts the smart pointer
 #include <vtkSmartPointer.h>
 
+#include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 class vtkRenderer;
 class vtkTexture;
@@ -22,9 +25,10 @@ namespace ddfcam::gui {
 /// same polydata (arrays resized and overwritten, then marked modified), so the mapper that
 /// shows it keeps its input and only the buffers change.
 ///
-/// With a tolerance texture (the frames carry tolerance classes and corner parameters), each
-/// triangle gets its own three points with texture coordinates into a RasterTextureAtlas of the
-/// classes, so the tolerance band is drawn at raster resolution on the coarse adaptive mesh.
+/// With a tolerance texture (the frames carry tolerance classes and corner parameters), every
+/// vertex slot gets one point per support face using it, with texture coordinates into a
+/// RasterTextureAtlas of the classes, so the tolerance band is drawn at raster resolution on
+/// the coarse adaptive mesh.
 class LiveSurfacePolyData {
  public:
   /// @param faceCount, rasterSteps the part's support faces and raster steps: when > 0 and
@@ -50,13 +54,18 @@ class LiveSurfacePolyData {
  private:
   void applyShared(const planning::LiveFrame& frame);
   void applyTextured(const planning::LiveFrame& frame);
-  // Triangle cells of the frame: its slot triples, or (ownCorners) points 3t, 3t+1, 3t+2.
-  void setCells(const planning::LiveFrame& frame, bool ownCorners);
+  // Triangle cells of the frame with corner points @p corners (3 per triangle).
+  void setCells(const planning::LiveFrame& frame, const std::vector<std::int32_t>& corners);
 
   vtkSmartPointer<vtkPolyData> data_;
   std::unique_ptr<RasterTextureAtlas> atlas_;
   vtkRenderer* renderer_ = nullptr;
   unsigned long observer_ = 0;
+  // Textured frames, reused between frames: per slot the face and point it was last given,
+  // per point the frame corner it copies, per corner its point.
+  std::vector<int> slotFace_, slotPoint_;
+  std::vector<std::size_t> points_;
+  std::vector<std::int32_t> connectivity_;
 };
 
 }  // namespace ddfcam::gui

@@ -30,11 +30,12 @@ namespace ddfcam::gui {
 
 /// @brief Parameters of SimulationPlayback.
 struct PlaybackParams {
-  /// Interval at which the view looks for a newer frame of the simulation, ms (default 15):
+  /// Interval at which the view looks for a newer frame of the simulation, ms (default 5):
   /// shorter than frameIntervalMs, so no published frame waits long.
   int tickMs = 5;
-  /// Shortest time between two frames the simulation publishes while playing, ms: the display
-  /// rate (default 25, 40 frames per second) whatever the simulation's rate.
+  /// Interval of the frames the simulation publishes while playing, ms
+  /// (LiveSimulationParams::frameIntervalS): the display rate (default 25, 40 frames per
+  /// second) whatever the simulation's rate, unless it cuts fewer poses per second.
   int frameIntervalMs = 25;
   /// Error bound of the live surface (ch. 7 adaptive triangulation) as a fraction of the
   /// part's bounding-box diagonal (dimensionless). Default 2e-4 (0.02 mm on a 100 mm part), as
@@ -120,6 +121,11 @@ class SimulationPlayback : public QWidget {
   int shownPose() const;
   /// @brief Frames shown in the last second of playing (0 before one passed).
   double framesPerSecond() const;
+  /// @brief Where the tool is drawn along the path, in poses: shownPose() while paused; while
+  /// playing slower than the display rate it moves on from there towards the next pose at the
+  /// set rate (pose + fraction), so the view shows motion between two cuts. -1 without a
+  /// playback.
+  double toolPosition() const { return live_ ? toolPosition_ : -1.0; }
 
  signals:
   /// @brief The playback ended: committed (true) or cancelled (false).
@@ -139,6 +145,12 @@ class SimulationPlayback : public QWidget {
   void finishIfDone();
   /// Hands the camera to the live simulation when it moved (or @p force): the level of detail.
   void updateLevelOfDetail(bool force);
+  /// Draws the tool at @p position (poses; a fraction interpolates between two poses).
+  void showToolAt(double position);
+  /// While playing slower than the display rate: the tool moves on at the set rate.
+  void moveToolBetweenPoses();
+  /// Back to the last cut pose (after a pause).
+  void settleTool();
 
   Workbench& workbench_;
   PlaybackParams params_;
@@ -153,6 +165,10 @@ class SimulationPlayback : public QWidget {
   int shownPosesCut_ = -1;
   std::size_t shownCollisions_ = static_cast<std::size_t>(-1);  ///< markers drawn for these
   std::deque<std::int64_t> frameTimesMs_;  ///< when frames were shown, last second
+  std::int64_t shownAtMs_ = 0;             ///< when the frame shown arrived (clock_)
+  std::int64_t renderedAtMs_ = 0;          ///< last render requested while playing (clock_)
+  double toolPosition_ = 0.0;              ///< see toolPosition()
+  bool shownColliding_ = false;            ///< the last cut pose collides
   QElapsedTimer clock_;
   bool committing_ = false;
   QTimer* timer_ = nullptr;

@@ -60,8 +60,9 @@ struct LiveSimulationParams {
   double displayEpsMm = 0.01;
   /// Poses per second while playing; <= 0: as fast as the machine can. Default 30.
   double posesPerSecond = 30.0;
-  /// Shortest time between two published frames while playing, s: the display follows at
-  /// this rate however fast the simulation runs. Default 1/30.
+  /// Interval of the published frames while playing, s: a frame follows the first pose that
+  /// ends past each multiple of it, so the display follows at this rate however fast the
+  /// simulation runs (and at the pose rate when that is slower). Default 1/30.
   double frameIntervalS = 1.0 / 30.0;
   /// Heights of the design on the workpiece's support (e.g. the "design" state): every pose is
   /// inspected for overcut against it (CutInspection). Empty: no inspection.
@@ -81,7 +82,7 @@ struct LiveSimulationParams {
 
 /// @brief Plays a GrindingSimulation on a worker thread. play() starts cutting at the set rate;
 /// the worker updates an incremental triangulation of the surface (only the faces a cut
-/// reached) and publishes a LiveFrame at most every frameIntervalS and whenever it stops;
+/// reached) and publishes a LiveFrame once per frameIntervalS and whenever it stops;
 /// latestFrame() hands the newest one to the viewer's thread. pause() stops the worker after
 /// the pose it is cutting (one pose of latency); step() and seek() run on the caller's thread
 /// with the worker stopped. The state at pose k is the same whether reached by playing, by
