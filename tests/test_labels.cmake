@@ -21,6 +21,7 @@ set(DDFCAM_SLOW_TESTS
   StockCrust.ConcaveCylinderRefusesAStockBeyondItsRadius
   StubbleProbe.GridLocalizationEqualsBruteForceForABallAndTwoRollsOnASaddle
   # ddfcam_ddf_shared_tests, ddfcam_stock_crust_shared_tests
+  IncrementalTriangulationShared.*
   MeshConversionShared.*
   StockCrustParts.*
   # ddfcam_planning_tests

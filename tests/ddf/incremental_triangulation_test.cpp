@@ -102,28 +102,6 @@ DisplacementField icosphereDdf(int m) {
   return ellipsoidPart(params).ddf;
 }
 
-// Every raster point's surface point lies within its face's bound of that face's triangles
-// (brute force over the triangles).
-::testing::AssertionResult withinFaceBounds(const DisplacementField& field,
-                                            const IncrementalTriangulation& live,
-                                            const std::vector<float>& bounds) {
-  const int n = field.raster().steps();
-  for (int f = 0; f < field.faceCount(); ++f)
-    for (int k = 0; k <= n; ++k)
-      for (int i = 0; i + k <= n; ++i) {
-        const Vec3 q = field.surfacePoint(f, i, k);
-        double best = 1e300;
-        for (const auto& t : live.faceTriangles(f))
-          best = std::min(best, test::pointTriangleDistance(q, live.vertices()[t[0]],
-                                                            live.vertices()[t[1]],
-                                                            live.vertices()[t[2]]));
-        if (best > bounds[f] + 1e-9)
-          return ::testing::AssertionFailure() << "face " << f << " point (" << i << ", " << k
-                                               << ") " << best << " mm from the mesh";
-      }
-  return ::testing::AssertionSuccess();
-}
-
 TEST(IncrementalTriangulation, StartsAsTheFreshBuild) {
   const DisplacementField field = test::sphereDdf(17);
   const IncrementalTriangulation live(field, 0.002);
@@ -158,7 +136,7 @@ TEST(IncrementalTriangulation, AfterCutsIsClosedWithinTheBoundWithTheFreshNormal
   EXPECT_TRUE(test::isClosedManifold(snap.mesh, 2));  // no cracks, no T-vertices
   EXPECT_LE(snap.maxErrorMm, 0.003);
   // Every raster point lies within the bound of its face's triangles (brute force).
-  EXPECT_TRUE(withinFaceBounds(field, live, std::vector<float>(field.faceCount(), 0.003f)));
+  EXPECT_TRUE(test::withinFaceBounds(field, live, std::vector<float>(field.faceCount(), 0.003f)));
   // Normals: those of the welded fresh mesh at the same positions.
   const std::vector<Vec3> expected = meshNormals(snap.mesh);
   std::vector<int> slotOf(snap.mesh.vertices.size(), -1);
@@ -285,7 +263,7 @@ TEST(IncrementalTriangulation, PerFaceBoundsGiveTheFreshBuildWithThoseBounds) {
     EXPECT_EQ(live.faceEps(), bounds);
     const AdaptiveTriangulation snap = live.snapshot();
     ASSERT_TRUE(test::isClosedManifold(snap.mesh, 2)) << "round " << round;
-    ASSERT_TRUE(withinFaceBounds(field, live, bounds)) << "round " << round;
+    ASSERT_TRUE(test::withinFaceBounds(field, live, bounds)) << "round " << round;
     ASSERT_TRUE(paramsMatchPositions(field, live, 0.002 * 64)) << "round " << round;
   }
   // All coarse: far fewer triangles than the fine start; the same bounds again change nothing.

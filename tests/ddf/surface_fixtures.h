@@ -3,6 +3,7 @@
 #pragma once
 
 #include <ddfcam/ddf/displacement_field.h>
+#include <ddfcam/ddf/incremental_triangulation.h>
 #include <ddfcam/ddf/triangle_mesh.h>
 
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include <set>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "../support/test_meshes.h"
 
@@ -120,6 +122,32 @@ inline ::testing::AssertionResult isClosedManifold(const ddf::TriangleMesh& mesh
                    static_cast<long>(directed.size() / 2) +
                    static_cast<long>(mesh.triangles.size());
   if (chi != euler) return ::testing::AssertionFailure() << "Euler characteristic " << chi;
+  return ::testing::AssertionSuccess();
+}
+
+/// Every raster point's surface point lies within its face's bound of that face's triangles
+/// of @p live (brute force over the triangles); @p worst (if given) gets the largest distance.
+inline ::testing::AssertionResult withinFaceBounds(const ddf::DisplacementField& field,
+                                                   const ddf::IncrementalTriangulation& live,
+                                                   const std::vector<float>& bounds,
+                                                   double* worst = nullptr) {
+  const int n = field.raster().steps();
+  double largest = 0.0;
+  for (int f = 0; f < field.faceCount(); ++f)
+    for (int k = 0; k <= n; ++k)
+      for (int i = 0; i + k <= n; ++i) {
+        const ddf::Vec3 q = field.surfacePoint(f, i, k);
+        double best = 1e300;
+        for (const auto& t : live.faceTriangles(f))
+          best = std::min(best, pointTriangleDistance(q, live.vertices()[t[0]],
+                                                      live.vertices()[t[1]],
+                                                      live.vertices()[t[2]]));
+        largest = std::max(largest, best);
+        if (best > bounds[f] + 1e-9)
+          return ::testing::AssertionFailure() << "face " << f << " point (" << i << ", " << k
+                                               << ") " << best << " mm from the mesh";
+      }
+  if (worst) *worst = largest;
   return ::testing::AssertionSuccess();
 }
 
