@@ -5,6 +5,7 @@
 #include <ddfcam/error.h>
 #include <ddfcam/gui/camera_tool_bar.h>
 #include <ddfcam/gui/console_dock.h>
+#include <ddfcam/gui/interaction_mode.h>
 #include <ddfcam/gui/default_dialogs.h>
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/job_progress_widget.h>
@@ -101,6 +102,8 @@ void MainWindow::createServices(const WorkbenchOptions& options) {
   cameraBar_ = new CameraToolBar(view_, this);
   addToolBar(Qt::TopToolBarArea, cameraBar_);
   status_ = new QLabel(this);
+  // The part facts give way (clipped, whole in the tooltip) to the mode and the job progress.
+  status_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
   statusBar()->addPermanentWidget(status_, 1);
   jobProgress_ = new JobProgressWidget(*jobs_, this);
   // Keep its room while idle: a status bar that grows during a job would resize the 3D view.
@@ -147,6 +150,8 @@ void MainWindow::createDocks() {
           });
   workbench_->mouldView = mouldView_;
   workbench_->projectActions = projectActions_.get();
+  workbench_->mode = new InteractionMode(this);
+  workbench_->mode->attachTo(*this);
 }
 
 void MainWindow::registerPanel(Panel* panel) {
@@ -308,7 +313,13 @@ void MainWindow::createEditMenu() {
   edit->addAction(undo);
   edit->addAction(redo);
   edit->addSeparator();
-  QAction* cancel = edit->addAction(tr("&Cancel running job"), this, [this] { jobs_->cancel(); });
+  // Esc stops what is going on: the running job, else an editing mode of the views.
+  QAction* cancel = edit->addAction(tr("&Cancel running job or editing mode"), this, [this] {
+    if (jobs_->isRunning())
+      jobs_->cancel();
+    else
+      workbench_->mode->end();
+  });
   cancel->setObjectName("actionCancelJob");
   cancel->setShortcut(Qt::Key_Escape);
 }
@@ -361,6 +372,7 @@ void MainWindow::updateTitle() {
 void MainWindow::updateStatus() {
   const QString summary = QString::fromStdString(partView_->summary());
   status_->setText(conversionWarning_.isEmpty() ? summary : summary + "  |  " + conversionWarning_);
+  status_->setToolTip(status_->text());
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

@@ -4,6 +4,7 @@
 
 #include <ddfcam/error.h>
 #include <ddfcam/gui/document.h>
+#include <ddfcam/gui/interaction_mode.h>
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/mould_commands.h>
 #include <ddfcam/gui/mould_view.h>
@@ -259,6 +260,29 @@ void MouldPanel::setPickMode(PickMode mode) {
   // Pairs are picked on both surfaces, so they need the two views.
   if ((mode == PickMode::PairFormed || mode == PickMode::PairMould) && workbench().mouldView)
     workbench().mouldView->setLayout(MouldView::Layout::SideBySide);
+  announcePickMode();
+}
+
+void MouldPanel::announcePickMode() {
+  InteractionMode* modes = workbench().mode;
+  if (!modes) return;
+  switch (mode_) {
+    case PickMode::None:
+      return modes->clear(this);
+    case PickMode::PairFormed:
+      return modes->begin(this, tr("Point pair"), tr("click the formed point (right)"),
+                          [this] { setPickMode(PickMode::None); });
+    case PickMode::PairMould:
+      return modes->begin(this, tr("Point pair"),
+                          tr("click the mould point (left)"),
+                          [this] { setPickMode(PickMode::None); });
+    case PickMode::SectionStart:
+      return modes->begin(this, tr("Section"), tr("click the line's start"),
+                          [this] { setPickMode(PickMode::None); });
+    case PickMode::SectionEnd:
+      return modes->begin(this, tr("Section"), tr("click the line's end"),
+                          [this] { setPickMode(PickMode::None); });
+  }
 }
 
 void MouldPanel::onPicked(int view, const Eigen::Vector3d& p) {
@@ -266,22 +290,22 @@ void MouldPanel::onPicked(int view, const Eigen::Vector3d& p) {
     case PickMode::PairFormed:
       if (view != MouldView::kSecondary) return;
       pendingFormed_ = p;
-      mode_ = PickMode::PairMould;
+      setPickMode(PickMode::PairMould);
       return;
     case PickMode::PairMould:
       if (view != MouldView::kPrimary || !pendingFormed_) return;
       addPointPair(*pendingFormed_, p);
       pendingFormed_.reset();
-      mode_ = PickMode::None;
+      setPickMode(PickMode::None);
       return;
     case PickMode::SectionStart:
       if (view != MouldView::kPrimary) return;
       sectionStart_ = p;
-      mode_ = PickMode::SectionEnd;
+      setPickMode(PickMode::SectionEnd);
       return;
     case PickMode::SectionEnd:
       if (view != MouldView::kPrimary || !sectionStart_) return;
-      mode_ = PickMode::None;
+      setPickMode(PickMode::None);
       drawSection(*sectionStart_, p);
       return;
     case PickMode::None:

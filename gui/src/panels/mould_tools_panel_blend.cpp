@@ -9,6 +9,7 @@
 #include <ddfcam/ddf/deformation_sequence.h>
 #include <ddfcam/error.h>
 #include <ddfcam/gui/document.h>
+#include <ddfcam/gui/interaction_mode.h>
 #include <ddfcam/planning/model/project.h>
 
 #include <QComboBox>
@@ -86,6 +87,17 @@ QFormLayout* MouldToolsPanel::buildBlendForm(QGroupBox* group) {
   form->addRow(tr("Boundary width"), blendBoundary_);
   form->addRow(tr("Brush radius"), brush_);
   form->addRow(tr("Click in mould view"), pickMode_);
+  connect(pickMode_, &QComboBox::currentIndexChanged, this, [this] {
+    InteractionMode* modes = workbench().mode;
+    if (!modes) return;
+    const auto mode = static_cast<BlendPickMode>(pickMode_->currentData().toInt());
+    if (mode == BlendPickMode::None) return modes->clear(this);
+    modes->begin(this, tr("Blend"),
+                 mode == BlendPickMode::PickCentre
+                     ? tr("click the fall-off centre")
+                     : tr("click to paint the region"),
+                 [this] { setBlendPickMode(BlendPickMode::None); });
+  });
   return form;
 }
 

@@ -4,6 +4,7 @@
 
 #include <ddfcam/error.h>
 #include <ddfcam/gui/document.h>
+#include <ddfcam/gui/interaction_mode.h>
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/panels/region_plan_editor.h>
 #include <ddfcam/gui/part_view.h>
@@ -188,8 +189,10 @@ QWidget* SegmentationPanel::buildPaintGroup() {
   auto* form = new QFormLayout(group);
   form->addRow(tr("Left drag"), mode_);
   form->addRow(tr("Brush radius"), radius_);
-  connect(mode_, &QComboBox::currentIndexChanged, this,
-          [this](int index) { tool_->setMode(static_cast<RegionEditMode>(index)); });
+  connect(mode_, &QComboBox::currentIndexChanged, this, [this](int index) {
+    tool_->setMode(static_cast<RegionEditMode>(index));
+    announceEditMode(static_cast<RegionEditMode>(index));
+  });
   connect(radius_, &QDoubleSpinBox::valueChanged, this,
           [this](double r) { tool_->setBrushRadiusMm(r); });
   tool_->setBrushRadiusMm(radius_->value());
@@ -306,6 +309,18 @@ bool SegmentationPanel::setSelectedPlan(const planning::RegionPlan& plan) {
   return pushRegions(tr("Change plan of '%1'").arg(name), [&](const auto& r) {
     return planning::setRegionPlan(r, selected.front(), plan);
   });
+}
+
+void SegmentationPanel::announceEditMode(RegionEditMode mode) {
+  InteractionMode* modes = workbench().mode;
+  if (!modes) return;
+  if (mode == RegionEditMode::None) return modes->clear(this);
+  static const QString names[] = {QString(), tr("Brush"), tr("Eraser"), tr("Lasso")};
+  static const QString hints[] = {QString(), tr("drag paints faces"),
+                                  tr("drag erases faces"),
+                                  tr("drag draws a lasso")};
+  const int i = static_cast<int>(mode);
+  modes->begin(this, names[i], hints[i], [this] { mode_->setCurrentIndex(0); });
 }
 
 void SegmentationPanel::setEditMode(RegionEditMode mode) {

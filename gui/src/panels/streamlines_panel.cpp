@@ -4,6 +4,7 @@
 
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/flow_field_display.h>
+#include <ddfcam/gui/interaction_mode.h>
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/part_scene.h>
 #include <ddfcam/gui/part_view.h>
@@ -94,6 +95,13 @@ QLayout* StreamlinesPanel::buildDrawRow(QWidget* group) {
   draw_->setText(tr("Draw direction"));
   draw_->setToolTip(tr("Drag on the part to draw the flow direction"));
   draw_->setCheckable(true);
+  connect(draw_, &QToolButton::toggled, this, [this](bool on) {
+    InteractionMode* modes = workbench().mode;
+    if (!modes) return;
+    if (!on) return modes->clear(this);
+    modes->begin(this, tr("Draw direction"), tr("drag draws the flow direction"),
+                 [this] { draw_->setChecked(false); });
+  });
   auto* clear = new QToolButton(group);
   clear->setObjectName("clearStrokesButton");
   clear->setText(tr("Clear strokes"));

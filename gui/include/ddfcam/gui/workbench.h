@@ -15,6 +15,7 @@ namespace ddfcam::gui {
 
 class ConsoleDock;
 class Document;
+class InteractionMode;
 class JobRunner;
 class MouldView;
 class PartView;
@@ -32,6 +33,9 @@ struct Workbench {
   ConsoleDock& console;            ///< message log
   ErrorReporter reportError;       ///< shows an error of a user action (dialog + console)
   MouldView* mouldView = nullptr;  ///< the "Mould" tab's views (mould and formed surfaces)
+  /// The views' interaction mode (a brush, a lasso, a pick) shown in the status bar; a panel
+  /// that turns a drag or click into an edit begins its mode here (may be null in tests).
+  InteractionMode* mode = nullptr;
   /// File operations; partReport() says how the document's part was imported (may be null).
   ProjectActions* projectActions = nullptr;
   /// Announces a long job with its estimate (see WorkbenchDialogs::confirmLongJob); true: go

@@ -133,6 +133,8 @@ class MouldPanel : public Panel {
   bool drawSection(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
 
  private:
+  /// The pick mode into the status bar (InteractionMode); Esc or leaving the panel ends it.
+  void announcePickMode();
   void buildInputs();
   void buildAlignment();
   void applyDirectAlignment(planning::MouldStudy study, planning::AlignmentMethod method);

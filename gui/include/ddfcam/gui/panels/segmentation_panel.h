@@ -91,6 +91,8 @@ class SegmentationPanel : public Panel {
   void updateMethodControls();
   QWidget* buildRegionGroup();
   QWidget* buildPaintGroup();
+  /// The paint mode into the status bar (InteractionMode); Esc or leaving the panel ends it.
+  void announceEditMode(RegionEditMode mode);
 
   RegionViewTool* tool_ = nullptr;
   QComboBox* method_ = nullptr;
