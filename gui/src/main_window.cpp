@@ -120,7 +120,9 @@ void MainWindow::createServices(const WorkbenchOptions& options) {
   connect(partView_.get(), &PartView::geometryChanged, this, [this](bool partReplaced) {
     updateStatus();
     // An oblique view from the front-right, z up: parts are mostly z-maps or lie on the table.
-    if (partReplaced) view_->viewFrom(ViewDirection::Isometric);
+    if (!partReplaced) return;
+    view_->viewFrom(ViewDirection::Isometric);
+    plots_->clear();  // histograms and sections of the previous part
   });
 }
 

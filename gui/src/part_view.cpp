@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <vtkPolyData.h>
 #include <iomanip>
@@ -132,6 +133,7 @@ void PartView::showField(const std::string& name) {
   if (field && display_.field != name) {
     display_.map = defaultColourMap(field->isSigned);
     display_.band.reset();
+    display_.faces.clear();
   }
   display_.field = name;
   display_.autoRange = true;
@@ -168,6 +170,33 @@ void PartView::setToleranceBand(const std::optional<planning::ToleranceBand>& ba
   view_.requestRender();
 }
 
+void PartView::setShownFaces(std::vector<int> faces) {
+  const int count = document_.project().part ? document_.project().part->faceCount() : 0;
+  for (int f : faces)
+    if (f < 0 || f >= count)
+      throw InvalidInput("shown faces: face " + std::to_string(f) + " is not one of the part's " +
+                         std::to_string(count));
+  std::sort(faces.begin(), faces.end());
+  if (faces == display_.faces) return;
+  display_.faces = std::move(faces);
+  applyFieldDisplay();
+  view_.requestRender();
+}
+
+std::vector<float> PartView::shownValues(const planning::ScalarField& field) const {
+  std::vector<float> values = field.values;
+  if (display_.faces.empty() || !document_.project().part) return values;
+  const ddf::DisplacementField& part = *document_.project().part;
+  const std::size_t per = part.pointsPerFace();
+  std::vector<char> shown(static_cast<std::size_t>(part.faceCount()), 0);
+  for (int f : display_.faces) shown[static_cast<std::size_t>(f)] = 1;
+  for (std::size_t f = 0; f < shown.size(); ++f)
+    if (!shown[f])
+      std::fill_n(values.begin() + static_cast<std::ptrdiff_t>(f * per), per,
+                  std::numeric_limits<float>::quiet_NaN());
+  return values;
+}
+
 void PartView::applyFieldDisplay() {
   const planning::ScalarField* field = shownField();
   const planning::Project& p = document_.project();
@@ -176,12 +205,13 @@ void PartView::applyFieldDisplay() {
     emit fieldDisplayChanged();
     return;
   }
+  const std::vector<float> values = shownValues(*field);
   if (display_.autoRange) {
     // Signed fields (curvature, deviation) may carry a few spikes that would wash out the
     // colours; unsigned ones (height, removal) are often zero over most of the part, where
     // quantiles would hide the largest values that matter.
-    const auto range = field->isSigned ? planning::robustFieldRange(field->values)
-                                       : planning::fieldRange(field->values);
+    const auto range = field->isSigned ? planning::robustFieldRange(values)
+                                       : planning::fieldRange(values);
     if (range) {
       ValueRange fit = defaultRange(range->min, range->max, field->isSigned);
       if (display_.band) fit = widenedForBand(fit, *display_.band);
@@ -199,10 +229,10 @@ void PartView::applyFieldDisplay() {
   // A coarse adaptive display would average a narrow groove or band away between its
   // vertices; through the raster texture every raster point keeps its own colour.
   if (scene_->showsRasterFields())
-    scene_->setSurfaceRasterField(field->values, style);
+    scene_->setSurfaceRasterField(values, style);
   else
-    scene_->setSurfaceField(
-        ddf::valuesAtSamples(*p.part, field->values, geometry_->surfaceSamples), style);
+    scene_->setSurfaceField(ddf::valuesAtSamples(*p.part, values, geometry_->surfaceSamples),
+                            style);
   emit fieldDisplayChanged();
 }
 

@@ -71,6 +71,15 @@ QCustomPlot* PlotDock::plot(const QString& name) {
   return created;
 }
 
+void PlotDock::clear() {
+  while (tabs_->count() > 0) {
+    QWidget* plot = tabs_->widget(0);
+    tabs_->removeTab(0);
+    plot->deleteLater();  // a slot of the plot may be on the stack
+  }
+  exportAction_->setEnabled(false);
+}
+
 QCustomPlot* PlotDock::findPlot(const QString& name) const {
   for (int i = 0; i < tabs_->count(); ++i) {
     if (tabs_->tabText(i) == name) return qobject_cast<QCustomPlot*>(tabs_->widget(i));

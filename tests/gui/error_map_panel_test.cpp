@@ -55,6 +55,7 @@ const double kStockMm = ddfcam::ddf::DemoPartParams{}.allowanceMm;
 
 struct ClassAreas {
   std::array<double, 3> area{};  // indexed by ToleranceClass
+  double noValue = 0.0;          // drawn in the grey of "no value"
   double percent(ToleranceClass c) const {
     return 100.0 * area[static_cast<int>(c)] / (area[0] + area[1] + area[2]);
   }
@@ -72,7 +73,10 @@ using Corners = std::array<vtkIdType, 3>;
 // Adds @p area to the class of colour @p rgb; the grey of "no value" (a raster point where the
 // desired surface has none) belongs to no class, as in the statistics.
 void addColour(const std::array<double, 3>& rgb, double area, ClassAreas& result) {
-  if (std::abs(rgb[0] - rgb[1]) < 0.02 && std::abs(rgb[1] - rgb[2]) < 0.02) return;
+  if (std::abs(rgb[0] - rgb[1]) < 0.02 && std::abs(rgb[1] - rgb[2]) < 0.02) {
+    result.noValue += area;
+    return;
+  }
   result.area[static_cast<int>(ddfcam::gui::toleranceClassOfColour(rgb))] += area;
 }
 
@@ -143,6 +147,7 @@ class ErrorMapPanelTest : public ddfcam::test::WorkbenchTest {
   void bandEditsRecolourAndUpdateStatistics();
   void deviationAlongAPassFollowsTheGroove();
   void undoRemovesTheErrorMap();
+  void aRegionsMapShowsTheRegionOnly();
   void scallopTableMatchesTheBallFormula();
   void coverageAndClampingShowBesideTheStatistics();
 
@@ -234,6 +239,47 @@ void ErrorMapPanelTest::bandEditsRecolourAndUpdateStatistics() {
   auto* plot = f_.window->plots().findPlot(ErrorMapPanel::kHistogramTab);
   QVERIFY(plot != nullptr);
   QCOMPARE(plot->plottableCount(), 3);
+}
+
+void ErrorMapPanelTest::aRegionsMapShowsTheRegionOnly() {
+  // A region of the faces left of x = 20 mm (support centroids), the grooves partly inside.
+  ddfcam::planning::Project p = project();
+  ddfcam::planning::Region left{"left half", {}, {0.3f, 0.3f, 0.9f}, {}};
+  double regionArea = 0.0, partArea = 0.0;
+  for (int f = 0; f < p.part->faceCount(); ++f) {
+    const auto& v = p.part->faceVertices(f);
+    const Eigen::Vector3d a = p.part->position(v[0]), b = p.part->position(v[1]),
+                          c = p.part->position(v[2]);
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    partArea += area;
+    if ((a + b + c).x() / 3.0 < 20.0) {
+      left.faces.push_back(f);
+      regionArea += area;
+    }
+  }
+  p.regions = {left};
+  load(p);
+  panel()->setRegion(0);
+  const auto& stats = *panel()->statistics();
+  QCOMPARE(f_.window->partView().fieldDisplay().faces, left.faces);
+  auto& view = *f_.window->view();
+  view.viewFrom(ddfcam::gui::ViewDirection::PlusZ);
+  ddfcam::test::dumpFrame(view.renderImage(), "error_map_region");
+  const ClassAreas drawn =
+      drawnClassAreas(f_.window->partView().scene().actor(ddfcam::gui::Layer::Surface));
+  // Outside the region the grey of "no value", about the share of the support outside it
+  // (the surface lies close over the support); inside, the classes of the region's statistics.
+  const double total = drawn.noValue + drawn.area[0] + drawn.area[1] + drawn.area[2];
+  QVERIFY2(std::abs(drawn.noValue / total - (1.0 - regionArea / partArea)) < 0.03,
+           qPrintable(QString("%1 %2").arg(drawn.noValue / total).arg(regionArea / partArea)));
+  QVERIFY(std::abs(drawn.percent(ToleranceClass::Overcut) - stats.overcutPercent) < 2.0);
+  QVERIFY(std::abs(drawn.percent(ToleranceClass::MaterialLeft) - stats.materialLeftPercent) < 2.0);
+  // The whole part again: no grey.
+  panel()->setRegion(-1);
+  QVERIFY(f_.window->partView().fieldDisplay().faces.empty());
+  const ClassAreas all =
+      drawnClassAreas(f_.window->partView().scene().actor(ddfcam::gui::Layer::Surface));
+  QVERIFY(all.noValue < 0.01 * (all.area[0] + all.area[1] + all.area[2]));
 }
 
 void ErrorMapPanelTest::deviationAlongAPassFollowsTheGroove() {

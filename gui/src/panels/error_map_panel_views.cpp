@@ -5,6 +5,7 @@
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/panels/error_map_panel.h>
+#include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/plot_dock.h>
 #include <ddfcam/planning/model/field_freshness.h>
 
@@ -108,6 +109,9 @@ void ErrorMapPanel::updateStatistics() {
   stale_ = field != nullptr && p.part && planning::isStale(*field, *p.part);
   if (field != nullptr && p.part) {
     const std::vector<int> faces = regionFaces(p, region_->currentData().toInt());
+    // The map shows what the statistics count: the chosen region only, the rest "no value".
+    const planning::ScalarField* shown = workbench().partView.shownField();
+    if (shown && shown->name == kDeviationField) workbench().partView.setShownFaces(faces);
     runUserAction(workbench().reportError, tr("Error statistics"), [&] {
       const planning::ToleranceBand band = toleranceBand();
       statistics_ = planning::errorStatistics(*field, *p.part, band, faces);

@@ -18,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ddfcam::gui {
 
@@ -34,6 +35,10 @@ struct FieldDisplay {
   /// Tolerance band of an error map (green inside, blue above, red below) instead of the
   /// colour map; cleared when another field is shown (default none).
   std::optional<planning::ToleranceBand> band{};
+  /// Support faces the field is drawn on (ascending); the others show "no value" grey and
+  /// count for no automatic range, e.g. an error map of one region. Empty: all faces. Cleared
+  /// when another field is shown (default empty).
+  std::vector<int> faces{};
 };
 
 /// @brief A picked point of the part surface.
@@ -84,6 +89,9 @@ class PartView : public QObject {
   /// back to the colour map). An automatic range then also spans twice the band.
   /// @throws InvalidInput for an invalid band.
   void setToleranceBand(const std::optional<planning::ToleranceBand>& band);
+  /// @brief Draws the shown field on @p faces only (FieldDisplay::faces; empty: all faces).
+  /// @throws InvalidInput if a face index is out of range.
+  void setShownFaces(std::vector<int> faces);
 
   /// @brief Shows @p tool at @p pose (part frame) as a translucent overlay; nullopt hides it.
   void setToolOverlay(const std::optional<std::pair<planning::Tool, Eigen::Isometry3d>>& tool);
@@ -117,6 +125,8 @@ class PartView : public QObject {
   void onDocumentChanged(Changes what);
   void rebuildGeometry(bool partReplaced);
   void applyFieldDisplay();
+  /// The shown field's values with NaN outside FieldDisplay::faces.
+  std::vector<float> shownValues(const planning::ScalarField& field) const;
   void rebuildPathOverlay();
   void rebuildGlyphOverlay();
   void rebuildCrustOverlay(int side);

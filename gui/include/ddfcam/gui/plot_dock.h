@@ -36,6 +36,9 @@ class PlotDock : public QDockWidget {
   /// @brief The plot of tab @p name, or nullptr if there is no such tab (creates nothing).
   QCustomPlot* findPlot(const QString& name) const;
 
+  /// @brief Removes every plot (e.g. a new part was opened: they describe the previous one).
+  void clear();
+
   /// @brief Names of all tabs, in tab order.
   QStringList plotNames() const;
 
