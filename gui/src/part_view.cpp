@@ -6,6 +6,7 @@
 #include <ddfcam/gui/adapters/crust_surface.h>
 #include <ddfcam/gui/adapters/poly_data.h>
 #include <ddfcam/gui/part_scene.h>
+#include <ddfcam/gui/path_overlay.h>
 #include <ddfcam/gui/vtk_view.h>
 #include <ddfcam/planning/model/field_freshness.h>
 #include <ddfcam/planning/model/field_statistics.h>
@@ -29,7 +30,6 @@ ValueRange widenedForBand(ValueRange range, const planning::ToleranceBand& band)
   return {std::min(range.lo, -reach), std::max(range.hi, reach)};
 }
 
-constexpr const char* kPathsOverlay = "paths";
 constexpr const char* kToolOverlay = "tool";
 constexpr const char* kGlyphOverlay = "vectors";
 constexpr const char* kPickOverlay = "pick";
@@ -90,6 +90,10 @@ std::string PartView::summary() const {
 
 void PartView::onDocumentChanged(Changes what) {
   if (what & (Change::Part | Change::Heights)) rebuildGeometry(what.testFlag(Change::Part));
+  if (what & Change::Part) {  // another part: its paths start visible, none selected
+    hiddenPaths_.clear();
+    selectedPath_ = -1;
+  }
   if (what & (Change::Paths | Change::Part)) rebuildPathOverlay();
   if (what & Change::Part) {
     setToolOverlay(std::nullopt);
@@ -237,28 +241,38 @@ void PartView::applyFieldDisplay() {
 }
 
 void PartView::rebuildPathOverlay() {
-  std::vector<std::vector<Eigen::Vector3d>> polylines;
-  for (const planning::ToolPath& path : document_.project().paths) {
-    for (std::size_t s = 0; s < path.passStarts.size(); ++s) {
-      const std::size_t begin = path.passStarts[s];
-      const std::size_t end =
-          s + 1 < path.passStarts.size() ? path.passStarts[s + 1] : path.poses.size();
-      std::vector<Eigen::Vector3d>& line = polylines.emplace_back();
-      for (std::size_t i = begin; i < end; ++i) line.push_back(path.poses[i].contact);
-    }
-  }
-  OverlayStyle style;
-  style.rgb = {1.0, 0.55, 0.1};
-  style.lineWidth = 2.5;
-  // Contacts lie on the design surface, under the stock until it is ground: draw them on top.
-  style.onTop = true;
-  scene_->setOverlay(kPathsOverlay, toPolylinePolyData(polylines), style);
-  scene_->setOverlayVisible(kPathsOverlay, pathsVisible_);
+  const PathOverlayLines lines =
+      pathOverlayLines(document_.project(), hiddenPaths_, selectedPath_);
+  // Links first, then cuts, then the selected path: the later overlay is drawn over.
+  scene_->setOverlay(kPathLinksOverlay, toPolylinePolyData(lines.links), pathLinkStyle());
+  scene_->setOverlay(kPathCutsOverlay, toPolylinePolyData(lines.cuts), pathCutStyle());
+  scene_->setOverlay(kSelectedPathOverlay, toPolylinePolyData(lines.selected),
+                     selectedPathStyle());
+  for (const char* name : {kPathLinksOverlay, kPathCutsOverlay, kSelectedPathOverlay})
+    scene_->setOverlayVisible(name, pathsVisible_);
 }
 
 void PartView::setPathsVisible(bool visible) {
   pathsVisible_ = visible;
-  scene_->setOverlayVisible(kPathsOverlay, visible);
+  for (const char* name : {kPathLinksOverlay, kPathCutsOverlay, kSelectedPathOverlay})
+    scene_->setOverlayVisible(name, visible);
+  view_.requestRender();
+}
+
+void PartView::setPathVisible(const std::string& name, bool visible) {
+  if (visible ? hiddenPaths_.erase(name) == 0 : !hiddenPaths_.insert(name).second) return;
+  rebuildPathOverlay();
+  view_.requestRender();
+}
+
+bool PartView::isPathVisible(const std::string& name) const {
+  return hiddenPaths_.count(name) == 0;
+}
+
+void PartView::setSelectedPath(int index) {
+  if (index == selectedPath_) return;
+  selectedPath_ = index;
+  rebuildPathOverlay();
   view_.requestRender();
 }
 

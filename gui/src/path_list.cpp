@@ -44,9 +44,13 @@ PathListWidget::PathListWidget(QWidget* parent) : QWidget(parent) {
   layout->addWidget(total_);
   connect(table_, &QTableWidget::itemSelectionChanged, this,
           [this] { emit selectionChanged(selectedPath()); });
+  connect(table_, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
+    if (item->column() == 0) emit visibilityChanged(item->row(), item->checkState() == Qt::Checked);
+  });
 }
 
-void PathListWidget::refresh(const planning::Project& project) {
+void PathListWidget::refresh(const planning::Project& project,
+                             const std::function<bool(const std::string&)>& visible) {
   const int previous = selectedPath();
   const int oldRows = table_->rowCount();
   const int count = static_cast<int>(project.paths.size());
@@ -70,6 +74,12 @@ void PathListWidget::refresh(const planning::Project& project) {
         if (c > 0) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         table_->setItem(r, c, item);
       }
+      // The name's box shows or hides the path in the view.
+      QTableWidgetItem* name = table_->item(r, 0);
+      name->setFlags(name->flags() | Qt::ItemIsUserCheckable);
+      name->setCheckState(!visible || visible(project.paths[r].name) ? Qt::Checked
+                                                                     : Qt::Unchecked);
+      name->setToolTip(tr("Untick to hide the path in the view"));
     }
     total_->setText(tr("%1 paths, %2 lines: cutting %3 mm, idle %4 mm")
                         .arg(count)
@@ -93,6 +103,11 @@ void PathListWidget::selectPath(int index) {
     table_->clearSelection();
   else
     table_->selectRow(index);
+}
+
+void PathListWidget::setPathChecked(int index, bool checked) {
+  if (QTableWidgetItem* name = table_->item(index, 0))
+    name->setCheckState(checked ? Qt::Checked : Qt::Unchecked);
 }
 
 QString PathListWidget::totalText() const {

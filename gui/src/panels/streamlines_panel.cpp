@@ -62,7 +62,15 @@ StreamlinesPanel::StreamlinesPanel(Workbench& workbench, QWidget* parent)
   connect(&workbench.partView, &PartView::picked, this, &StreamlinesPanel::onPicked);
   viewWidget_ = &workbench.partView.view();
   viewWidget_->installEventFilter(this);
-  connect(pathList_, &PathListWidget::selectionChanged, this, [this] { updatePreview(); });
+  connect(pathList_, &PathListWidget::selectionChanged, this, [this](int index) {
+    this->workbench().partView.setSelectedPath(index);  // highlighted in the view
+    updatePreview();
+  });
+  connect(pathList_, &PathListWidget::visibilityChanged, this, [this](int index, bool on) {
+    const auto& paths = this->workbench().document.project().paths;
+    if (index >= 0 && index < static_cast<int>(paths.size()))
+      this->workbench().partView.setPathVisible(paths[static_cast<std::size_t>(index)].name, on);
+  });
   connect(&workbench.document, &Document::changed, this, [this](Changes what) {
     if (what & (Change::Part | Change::Heights)) {
       ++generation_;
@@ -79,12 +87,19 @@ StreamlinesPanel::StreamlinesPanel(Workbench& workbench, QWidget* parent)
       showStrokes();  // a region's strokes may have changed (drawn, cleared, undone)
     }
     if (what & (Change::Part | Change::Paths)) {
-      pathList_->refresh(this->workbench().document.project());
+      refreshPathList();
       updatePreview();
     }
   });
   refreshRegions();
-  pathList_->refresh(workbench.document.project());
+  refreshPathList();
+}
+
+void StreamlinesPanel::refreshPathList() {
+  PartView& view = workbench().partView;
+  pathList_->refresh(workbench().document.project(),
+                     [&view](const std::string& name) { return view.isPathVisible(name); });
+  view.setSelectedPath(pathList_->selectedPath());
 }
 
 StreamlinesPanel::~StreamlinesPanel() = default;

@@ -17,6 +17,7 @@
 
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -97,8 +98,14 @@ class PartView : public QObject {
   void setToolOverlay(const std::optional<std::pair<planning::Tool, Eigen::Isometry3d>>& tool);
   /// @brief Shows or hides the displacement vectors of the support vertices as arrows.
   void setVectorGlyphsVisible(bool visible);
-  /// @brief Shows or hides the tool-path overlay.
+  /// @brief Shows or hides the tool-path overlays (cuts, links, selected path).
   void setPathsVisible(bool visible);
+  /// @brief Shows or hides the path named @p name (kept by name while paths are edited).
+  void setPathVisible(const std::string& name, bool visible);
+  bool isPathVisible(const std::string& name) const;
+  /// @brief Highlights path @p index (-1: none) over the others (path_overlay.h).
+  void setSelectedPath(int index);
+  int selectedPath() const { return selectedPath_; }
   /// @brief Name of the overlay of the crust's offset surface on side @p side (+1: h = +1,
   /// -1: h = -1): "crust+1" or "crust-1".
   static std::string crustOverlayName(int side);
@@ -140,6 +147,8 @@ class PartView : public QObject {
   std::optional<PartFacts> facts_;
   FieldDisplay display_;
   bool pathsVisible_ = true;
+  std::set<std::string> hiddenPaths_;  ///< names of the paths not drawn
+  int selectedPath_ = -1;
   bool glyphsVisible_ = false;
   bool crustVisible_[2] = {false, false};  ///< h = +1, h = -1
 };

@@ -6,6 +6,9 @@
 
 #include <QWidget>
 
+#include <functional>
+#include <string>
+
 class QLabel;
 class QTableWidget;
 
@@ -32,8 +35,12 @@ class PathListWidget : public QWidget {
  public:
   explicit PathListWidget(QWidget* parent = nullptr);
   /// @brief Rebuilds the rows from @p project; selects the last path when paths were added or
-  /// the selected row is gone, else keeps the selection.
-  void refresh(const planning::Project& project);
+  /// the selected row is gone, else keeps the selection. The box by each name is ticked where
+  /// @p visible (by path name) says the path is shown (all when null).
+  void refresh(const planning::Project& project,
+               const std::function<bool(const std::string&)>& visible = {});
+  /// @brief Ticks or unticks the box by path @p index's name (as a click does).
+  void setPathChecked(int index, bool checked);
   /// @brief Index of the selected path, -1 if none.
   int selectedPath() const;
   /// @brief Selects path @p index (-1: none).
@@ -45,6 +52,8 @@ class PathListWidget : public QWidget {
  signals:
   /// @brief The selected path changed (-1: none).
   void selectionChanged(int index);
+  /// @brief The box by path @p index's name was ticked (@p visible) or unticked.
+  void visibilityChanged(int index, bool visible);
 
  private:
   QTableWidget* table_ = nullptr;

@@ -196,6 +196,8 @@ class StreamlinesPanel : public Panel {
                                 planning::StreamlinePathParams params);
   void showSampling();
   void onPicked(const PickResult& pick);
+  /// The path list with the view's visibility ticks; the view highlights its selection.
+  void refreshPathList();
   void refreshRegions();
   FieldChoice currentChoice() const;
   /// @p note, filled by @p work, is added to the status label when the path is added.

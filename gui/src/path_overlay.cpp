@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// ddfcam gui: pathOverlayLines and the looks of the path overlays.
+#include <ddfcam/gui/path_overlay.h>
+
+#include <cstddef>
+
+namespace ddfcam::gui {
+
+namespace {
+
+// The passes of @p path as contact polylines; the links between them as 2-point lines.
+void addPath(const planning::ToolPath& path,
+             std::vector<std::vector<Eigen::Vector3d>>& passes,
+             std::vector<std::vector<Eigen::Vector3d>>* links) {
+  for (std::size_t s = 0; s < path.passStarts.size(); ++s) {
+    const auto begin = static_cast<std::size_t>(path.passStarts[s]);
+    const std::size_t end = s + 1 < path.passStarts.size()
+                                ? static_cast<std::size_t>(path.passStarts[s + 1])
+                                : path.poses.size();
+    if (begin >= end) continue;
+    std::vector<Eigen::Vector3d>& line = passes.emplace_back();
+    for (std::size_t i = begin; i < end; ++i) line.push_back(path.poses[i].contact);
+    if (links && begin > 0) links->push_back({path.poses[begin - 1].contact, path.poses[begin].contact});
+  }
+}
+
+}  // namespace
+
+PathOverlayLines pathOverlayLines(const planning::Project& project,
+                                  const std::set<std::string>& hidden, int selected) {
+  PathOverlayLines out;
+  for (std::size_t p = 0; p < project.paths.size(); ++p) {
+    const planning::ToolPath& path = project.paths[p];
+    if (hidden.count(path.name)) continue;
+    addPath(path, out.cuts, &out.links);
+    if (static_cast<int>(p) == selected) addPath(path, out.selected, nullptr);
+  }
+  return out;
+}
+
+OverlayStyle pathCutStyle() {
+  OverlayStyle style;
+  style.rgb = {0.97, 0.97, 0.97};
+  style.lineWidth = 2.5;
+  style.onTop = true;
+  return style;
+}
+
+OverlayStyle pathLinkStyle() {
+  OverlayStyle style;
+  style.rgb = {0.08, 0.08, 0.1};
+  style.lineWidth = 1.2;
+  style.onTop = true;
+  return style;
+}
+
+OverlayStyle selectedPathStyle() {
+  OverlayStyle style;
+  style.rgb = {1.0, 0.9, 0.0};
+  style.lineWidth = 4.5;
+  style.onTop = true;
+  return style;
+}
+
+}  // namespace ddfcam::gui
