@@ -2,6 +2,7 @@
 // ddfcam gui: pathOverlayLines and the looks of the path overlays.
 #include <ddfcam/gui/path_overlay.h>
 
+#include <array>
 #include <cstddef>
 
 namespace ddfcam::gui {
@@ -24,6 +25,14 @@ void addPath(const planning::ToolPath& path,
   }
 }
 
+OverlayStyle onTopLine(const std::array<double, 3>& rgb, double widthPx) {
+  OverlayStyle style;
+  style.rgb = rgb;
+  style.lineWidth = widthPx;
+  style.onTop = true;
+  return style;
+}
+
 }  // namespace
 
 PathOverlayLines pathOverlayLines(const planning::Project& project,
@@ -39,27 +48,15 @@ PathOverlayLines pathOverlayLines(const planning::Project& project,
 }
 
 OverlayStyle pathCutStyle() {
-  OverlayStyle style;
-  style.rgb = {0.97, 0.97, 0.97};
-  style.lineWidth = 2.5;
-  style.onTop = true;
-  return style;
+  return onTopLine({0.97, 0.97, 0.97}, 2.5);
 }
 
 OverlayStyle pathLinkStyle() {
-  OverlayStyle style;
-  style.rgb = {0.08, 0.08, 0.1};
-  style.lineWidth = 1.2;
-  style.onTop = true;
-  return style;
+  return onTopLine({0.08, 0.08, 0.1}, 1.2);
 }
 
 OverlayStyle selectedPathStyle() {
-  OverlayStyle style;
-  style.rgb = {1.0, 0.9, 0.0};
-  style.lineWidth = 4.5;
-  style.onTop = true;
-  return style;
+  return onTopLine({1.0, 0.9, 0.0}, 4.5);
 }
 
 }  // namespace ddfcam::gui
