@@ -144,6 +144,11 @@ void StreamlinesPanelTest::coverFillsTheRegion() {
   waitOk();
   QCOMPARE(project().paths.size(), std::size_t{1});
   QCOMPARE(f_.window->document().undoStack()->count(), undoBefore + 1);
+  // The project had no tool: the default roll came with the path, and the panel says so.
+  QCOMPARE(project().tools.size(), std::size_t{1});
+  const QString status = f_.window->findChild<QLabel*>("streamlineStatus")->text();
+  QVERIFY2(status.contains("added the default roll R5 W10") && status.contains("Tools panel"),
+           qPrintable(status));
   const auto& path = project().paths.front();
   QVERIFY(path.passStarts.size() >= 5);
   // Brute force: every raster point of the region lies within d_sep (+ half a trace step and

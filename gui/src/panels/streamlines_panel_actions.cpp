@@ -4,6 +4,7 @@
 
 #include <ddfcam/error.h>
 #include <ddfcam/gui/adapters/poly_data.h>
+#include <ddfcam/gui/console_dock.h>
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/document_command.h>
 #include <ddfcam/gui/flow_field_display.h>
@@ -138,11 +139,18 @@ void StreamlinesPanel::addPath(std::vector<planning::Streamline> lines, const QS
                       : QString();
     document.push(std::make_unique<AddPathCommand>(document, std::move(placed.placed.path),
                                                    needTool ? std::optional(tool) : std::nullopt));
-    status_->setText(tr("%1: %2 lines, cutting %3 mm%4")
+    // A tool the engineer did not choose is said out loud, with where to change it.
+    const QString added =
+        needTool ? tr(". The project had no tool: added the default %1 (change it in the Tools "
+                      "panel)")
+                       .arg(QString::fromStdString(tool.name))
+                 : QString();
+    status_->setText(tr("%1: %2 lines, cutting %3 mm%4%5")
                          .arg(QString::fromStdString(params.name))
                          .arg(placed.lines.size())
                          .arg(placed.cuttingLengthMm, 0, 'f', 1)
-                         .arg(idle));
+                         .arg(idle, added));
+    if (needTool) workbench().console.appendMessage(LogLevel::Warning, added.mid(2));
   });
 }
 
