@@ -7,6 +7,7 @@
 #include <ddfcam/error.h>
 #include <ddfcam/gui/document.h>
 #include <ddfcam/gui/document_command.h>
+#include <ddfcam/gui/histogram_range.h>
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/part_view.h>
 #include <ddfcam/gui/plot_dock.h>
@@ -151,6 +152,11 @@ FieldsPanel::FieldsPanel(Workbench& workbench, QWidget* parent) : Panel(workbenc
   buildControls();
   connect(&workbench.document, &Document::changed, this, [this](Changes what) {
     if (what & (Change::Fields | Change::Part | Change::Heights)) refreshList();
+  });
+  rangeMarkers_ = new HistogramRangeMarkers(this);
+  connect(rangeMarkers_, &HistogramRangeMarkers::rangeEdited, this, [this](double lo, double hi) {
+    runUserAction(this->workbench().reportError, tr("Set colour range"),
+                  [&] { this->workbench().partView.setRange(lo, hi); });
   });
   connect(&workbench.partView, &PartView::fieldDisplayChanged, this, [this] {
     refreshList();
@@ -357,12 +363,18 @@ void FieldsPanel::updateHistogram() {
   const auto& project = workbench().document.project();
   if (!field || !project.part) return;
   const FieldDisplay& d = workbench().partView.fieldDisplay();
-  // Shared raster points once each, over the colour range: bars line up with the scalar bar.
+  // Shared raster points once each, over all values and the colour range: the range's ends are
+  // lines on it that the engineer drags, and the bars beyond them are what the scalar bar's
+  // out-of-range colours show.
   const std::vector<float> perPoint = ddf::valuesPerPoint(*project.part, field->values);
-  const planning::Histogram h = planning::histogram(perPoint, kHistogramBins, d.lo, d.hi);
+  const std::optional<planning::FieldRange> all = planning::fieldRange(perPoint);
+  double lo = all ? std::min(all->min, d.lo) : d.lo, hi = all ? std::max(all->max, d.hi) : d.hi;
+  if (!(hi > lo)) hi = lo + 1.0;
+  const planning::Histogram h = planning::histogram(perPoint, kHistogramBins, lo, hi);
   const std::string label =
       field->unit.empty() ? field->name : field->name + " [" + field->unit + "]";
   workbench().plots.showHistogram(h, QString::fromStdString(label));
+  rangeMarkers_->show(workbench().plots.findPlot(PlotDock::kHistogramTab), d.lo, d.hi);
 }
 
 }  // namespace ddfcam::gui

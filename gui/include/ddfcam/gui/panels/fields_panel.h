@@ -17,6 +17,8 @@ class QPushButton;
 
 namespace ddfcam::gui {
 
+class HistogramRangeMarkers;
+
 /// @brief Fields the panel can compute (each through the core, as a job).
 enum class FieldKind {
   Height,             ///< planning::heightField
@@ -70,6 +72,7 @@ class FieldsPanel : public Panel {
   QPushButton* recompute_ = nullptr;
   QComboBox* colourMap_ = nullptr;
   QCheckBox* autoRange_ = nullptr;
+  HistogramRangeMarkers* rangeMarkers_ = nullptr;  ///< the colour range on the histogram
   QDoubleSpinBox* min_ = nullptr;
   QDoubleSpinBox* max_ = nullptr;
   bool updating_ = false;
