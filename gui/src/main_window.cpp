@@ -5,9 +5,9 @@
 #include <ddfcam/error.h>
 #include <ddfcam/gui/camera_tool_bar.h>
 #include <ddfcam/gui/console_dock.h>
-#include <ddfcam/gui/interaction_mode.h>
 #include <ddfcam/gui/default_dialogs.h>
 #include <ddfcam/gui/document.h>
+#include <ddfcam/gui/interaction_mode.h>
 #include <ddfcam/gui/job_progress_widget.h>
 #include <ddfcam/gui/job_runner.h>
 #include <ddfcam/gui/mould_view.h>
@@ -30,6 +30,7 @@
 #include <ddfcam/gui/recent_files.h>
 #include <ddfcam/gui/recovery_manager.h>
 #include <ddfcam/gui/vtk_view.h>
+#include <ddfcam/gui/wheel_guard.h>
 #include <ddfcam/gui/workbench.h>
 
 #include <QAction>
@@ -154,6 +155,7 @@ void MainWindow::createDocks() {
   workbench_->projectActions = projectActions_.get();
   workbench_->mode = new InteractionMode(this);
   workbench_->mode->attachTo(*this);
+  new WheelGuard(this);  // the wheel scrolls panels, it does not change their boxes
 }
 
 void MainWindow::registerPanel(Panel* panel) {

@@ -15,7 +15,12 @@
 #include <ddfcam/planning/model/demo_project.h>
 
 #include <QComboBox>
+#include <QDockWidget>
 #include <QLabel>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QVBoxLayout>
+#include <QWheelEvent>
 #include <QtTest/QtTest>
 
 #include <vtkCamera.h>
@@ -36,6 +41,7 @@ class InteractionModeTest : public ddfcam::test::WorkbenchTest {
   void leavingThePanelEndsItsModeAndADragTurnsTheCamera();
   void aNewModeEndsTheOneBefore();
   void mouldPicksAreModesToo();
+  void theWheelOverABoxScrollsThePanel();
 
  private:
   QString statusText() const {
@@ -136,6 +142,42 @@ void InteractionModeTest::mouldPicksAreModesToo() {
   pressEscape();
   QCOMPARE(mould->pickMode(), ddfcam::gui::MouldPanel::PickMode::None);
   QVERIFY2(statusText().startsWith("Navigate:"), qPrintable(statusText()));
+}
+
+void InteractionModeTest::theWheelOverABoxScrollsThePanel() {
+  // A panel as the workbench docks one: a scroll area over taller content with a combo box. The
+  // wheel over the box, which the pointer only passes over, scrolls the panel and leaves the
+  // box's value; clicked into (focused), the box takes the wheel as usual. (The workbench's
+  // wheel guard filters the whole application.)
+  QScrollArea area;
+  auto* content = new QWidget;
+  auto* layout = new QVBoxLayout(content);
+  auto* box = new QComboBox;
+  box->addItems({"off (camera)", "brush", "eraser"});
+  layout->addWidget(box);
+  layout->addSpacing(2000);
+  area.setWidget(content);
+  area.setWidgetResizable(true);
+  area.resize(300, 200);
+  area.show();
+  area.activateWindow();
+  QVERIFY(QTest::qWaitForWindowActive(&area));
+  QScrollBar* bar = area.verticalScrollBar();
+  QTRY_VERIFY(bar->maximum() > 0);
+  const auto wheelDown = [box] {
+    const QPointF at(box->width() / 2.0, box->height() / 2.0);
+    QWheelEvent wheel(at, box->mapToGlobal(at), QPoint(), QPoint(0, -120), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(box, &wheel);
+  };
+  area.setFocus();
+  wheelDown();
+  QCOMPARE(box->currentIndex(), 0);
+  QVERIFY(bar->value() > 0);
+  box->setFocus();
+  QTRY_VERIFY(box->hasFocus());
+  wheelDown();
+  QCOMPARE(box->currentIndex(), 1);
 }
 
 DDFCAM_GUI_TEST_MAIN(InteractionModeTest)
